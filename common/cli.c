@@ -1,0 +1,266 @@
+/* cli.c - see cli.h. */
+#include "cli.h"
+
+#include "light.h"
+#include "log.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef COURSE_DEFAULT_SCENE
+#define COURSE_DEFAULT_SCENE "assets/scenes/default.scene"
+#endif
+
+int cli_choice_index(const char *const *choices, const char *value)
+{
+    if (!choices || !value)
+        return -1;
+    for (int i = 0; choices[i]; i++)
+        if (strcmp(choices[i], value) == 0)
+            return i;
+    return -1;
+}
+
+static void print_choices(FILE *stream, const char *const *choices)
+{
+    for (int i = 0; choices[i]; i++)
+        fprintf(stream, "%s%s", i ? "|" : "", choices[i]);
+}
+
+void cli_print_help(const cli_desc *desc, FILE *stream)
+{
+    fprintf(stream, "usage: %s [options]\n%s\n\noptions:\n", desc->program, desc->summary);
+    fprintf(stream,
+            "  --help                   this text\n"
+            "  --headless[=egl|osmesa]  no window: EGL surfaceless (default), or OSMesa\n"
+            "  --size WxH               framebuffer size in pixels (default 800x600)\n"
+            "  --frames N               frames to render, then exit (window default: until closed;\n"
+            "                           headless default: 1)\n"
+            "  --screenshot PATH        write the last frame as PNG (atomically)\n"
+            "  --scene PATH             scene file (default %s)\n",
+            COURSE_DEFAULT_SCENE);
+    if (desc->renderers) {
+        fprintf(stream, "  --renderer NAME          ");
+        print_choices(stream, desc->renderers);
+        fprintf(stream, " (default %s)\n", desc->renderers[0]);
+    }
+    if (desc->views) {
+        fprintf(stream, "  --view NAME              ");
+        print_choices(stream, desc->views);
+        fprintf(stream, " (default %s)\n", desc->views[0]);
+    }
+    for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++) {
+        const cli_extra *e = &desc->extras[i];
+        fprintf(stream, "  --%s %s%*s%s", e->name, e->metavar,
+                (int)(22 - strlen(e->name) - strlen(e->metavar) > 0 ? 22 - strlen(e->name) - strlen(e->metavar)
+                                                                     : 1),
+                "", e->help);
+        if (e->choices) {
+            fprintf(stream, " (");
+            print_choices(stream, e->choices);
+            fprintf(stream, ")");
+        }
+        if (e->default_value)
+            fprintf(stream, " (default %s)", e->default_value);
+        fprintf(stream, "\n");
+    }
+    fprintf(stream,
+            "  --lights N               replace the scene's lights by N generated ones\n"
+            "  --seed S                 seed of the light generator (default 1)\n"
+            "  --time T                 animation time in seconds (default 0)\n"
+            "  --cutoff C               attenuation cut-off (default 5/256 = %.6f; 0 = exact, no cut-off)\n"
+            "  --bench                  time frames (glFinish + monotonic clock) and print a 'bench:' line\n"
+            "  --warmup N               untimed frames before --bench timing (default 3)\n"
+            "  --gl-debug               report GL debug messages; any GL error fails the run\n"
+            "  --verbose                more log lines\n",
+            LIGHT_DEFAULT_CUTOFF);
+    if (desc->keys)
+        fprintf(stream, "\nwindow keys:\n%s", desc->keys);
+    fprintf(stream, "\nexit codes: 0 ok, 1 runtime failure, 2 usage or input error, 77 no GL context\n");
+}
+
+static bool parse_int(const char *s, long lo, long hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo || v > hi)
+        return false;
+    *out = (int)v;
+    return true;
+}
+
+static bool parse_double(const char *s, double lo, double hi, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno || end == s || *end || !isfinite(v) || v < lo || v > hi)
+        return false;
+    *out = v;
+    return true;
+}
+
+static bool parse_size(const char *s, int *w, int *h)
+{
+    char buf[64];
+    const char *x = strchr(s, 'x');
+    if (!x || (size_t)(x - s) >= sizeof buf)
+        return false;
+    memcpy(buf, s, (size_t)(x - s));
+    buf[x - s] = '\0';
+    return parse_int(buf, 1, CLI_MAX_SIZE, w) && parse_int(x + 1, 1, CLI_MAX_SIZE, h);
+}
+
+static int usage_error(const cli_desc *desc, const char *fmt, const char *arg)
+{
+    char msg[512];
+    snprintf(msg, sizeof msg, fmt, arg);
+    log_error("%s: %s (see --help)", desc->program, msg);
+    return CLI_EXIT_USAGE;
+}
+
+/* "--name value" or "--name=value"; returns the value or NULL. */
+static const char *option_value(int argc, char **argv, int *i, const char *name)
+{
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0)
+        return NULL;
+    if (a[n] == '=')
+        return a + n + 1;
+    if (a[n] == '\0' && *i + 1 < argc)
+        return argv[++*i];
+    return NULL;
+}
+
+static bool is_option(const char *arg, const char *name)
+{
+    size_t n = strlen(name);
+    return strncmp(arg, name, n) == 0 && (arg[n] == '\0' || arg[n] == '=');
+}
+
+const char *cli_extra_value(const cli_desc *desc, const cli_options *options, const char *name)
+{
+    for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++)
+        if (strcmp(desc->extras[i].name, name) == 0)
+            return options->extra_values[i];
+    return NULL;
+}
+
+int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
+{
+    memset(out, 0, sizeof *out);
+    out->width = 800;
+    out->height = 600;
+    out->frames = -1;
+    out->warmup = 3;
+    out->scene_path = COURSE_DEFAULT_SCENE;
+    out->renderer = desc->renderers ? desc->renderers[0] : NULL;
+    out->view = desc->views ? desc->views[0] : NULL;
+    out->lights = -1;
+    out->seed = 1;
+    out->cutoff = LIGHT_DEFAULT_CUTOFF;
+#ifndef NDEBUG
+    out->gl_debug = true;
+#endif
+    for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++)
+        out->extra_values[i] = desc->extras[i].default_value;
+
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            cli_print_help(desc, stdout);
+            return CLI_EXIT_DONE;
+        } else if (strcmp(a, "--headless") == 0 || strcmp(a, "--headless=egl") == 0) {
+            out->headless = true;
+            out->backend = CLI_BACKEND_EGL;
+        } else if (strcmp(a, "--headless=osmesa") == 0) {
+            out->headless = true;
+            out->backend = CLI_BACKEND_OSMESA;
+        } else if (strncmp(a, "--headless=", 11) == 0) {
+            return usage_error(desc, "unknown headless backend '%s' (egl or osmesa)", a + 11);
+        } else if (strcmp(a, "--bench") == 0) {
+            out->bench = true;
+        } else if (strcmp(a, "--gl-debug") == 0) {
+            out->gl_debug = true;
+        } else if (strcmp(a, "--verbose") == 0) {
+            out->verbose = true;
+        } else if (is_option(a, "--size")) {
+            if (!(v = option_value(argc, argv, &i, "--size")))
+                return usage_error(desc, "%s needs a value WxH", a);
+            if (!parse_size(v, &out->width, &out->height))
+                return usage_error(desc, "bad --size '%s': expected WxH, each 1..16384", v);
+        } else if (is_option(a, "--frames")) {
+            if (!(v = option_value(argc, argv, &i, "--frames")) || !parse_int(v, 1, INT_MAX, &out->frames))
+                return usage_error(desc, "bad --frames '%s': expected a whole number >= 1", v ? v : "");
+        } else if (is_option(a, "--warmup")) {
+            if (!(v = option_value(argc, argv, &i, "--warmup")) || !parse_int(v, 0, 100000, &out->warmup))
+                return usage_error(desc, "bad --warmup '%s': expected a whole number >= 0", v ? v : "");
+        } else if (is_option(a, "--screenshot")) {
+            if (!(v = option_value(argc, argv, &i, "--screenshot")) || !*v)
+                return usage_error(desc, "%s needs a file name", "--screenshot");
+            out->screenshot = v;
+        } else if (is_option(a, "--scene")) {
+            if (!(v = option_value(argc, argv, &i, "--scene")) || !*v)
+                return usage_error(desc, "%s needs a file name", "--scene");
+            out->scene_path = v;
+        } else if (is_option(a, "--renderer")) {
+            if (!desc->renderers)
+                return usage_error(desc, "%s has a single renderer: --renderer is not available", desc->program);
+            if (!(v = option_value(argc, argv, &i, "--renderer")) || cli_choice_index(desc->renderers, v) < 0)
+                return usage_error(desc, "unknown renderer '%s'", v ? v : "");
+            out->renderer = v;
+        } else if (is_option(a, "--view")) {
+            if (!desc->views)
+                return usage_error(desc, "%s has no views: --view is not available", desc->program);
+            if (!(v = option_value(argc, argv, &i, "--view")) || cli_choice_index(desc->views, v) < 0)
+                return usage_error(desc, "unknown view '%s'", v ? v : "");
+            out->view = v;
+        } else if (is_option(a, "--lights")) {
+            if (!(v = option_value(argc, argv, &i, "--lights")) || !parse_int(v, 0, 1000000, &out->lights))
+                return usage_error(desc, "bad --lights '%s': expected 0..1000000", v ? v : "");
+        } else if (is_option(a, "--seed")) {
+            int seed;
+            if (!(v = option_value(argc, argv, &i, "--seed")) || !parse_int(v, 0, INT_MAX, &seed))
+                return usage_error(desc, "bad --seed '%s': expected a whole number >= 0", v ? v : "");
+            out->seed = (uint32_t)seed;
+        } else if (is_option(a, "--time")) {
+            double t;
+            if (!(v = option_value(argc, argv, &i, "--time")) || !parse_double(v, -1e6, 1e6, &t))
+                return usage_error(desc, "bad --time '%s': expected seconds", v ? v : "");
+            out->time = (float)t;
+        } else if (is_option(a, "--cutoff")) {
+            if (!(v = option_value(argc, argv, &i, "--cutoff")) || !parse_double(v, 0.0, 1e6, &out->cutoff))
+                return usage_error(desc, "bad --cutoff '%s': expected a number >= 0", v ? v : "");
+        } else if (strncmp(a, "--", 2) == 0) {
+            int k = 0;
+            for (; k < CLI_MAX_EXTRAS && desc->extras[k].name; k++) {
+                char opt[80];
+                snprintf(opt, sizeof opt, "--%s", desc->extras[k].name);
+                if (!is_option(a, opt))
+                    continue;
+                if (!(v = option_value(argc, argv, &i, opt)))
+                    return usage_error(desc, "%s needs a value", opt);
+                if (desc->extras[k].choices && cli_choice_index(desc->extras[k].choices, v) < 0) {
+                    char msg[160];
+                    snprintf(msg, sizeof msg, "bad %s '%%s'", opt);
+                    return usage_error(desc, msg, v);
+                }
+                out->extra_values[k] = v;
+                break;
+            }
+            if (k == CLI_MAX_EXTRAS || !desc->extras[k].name)
+                return usage_error(desc, "unknown option '%s'", a);
+        } else {
+            return usage_error(desc, "unexpected argument '%s'", a);
+        }
+    }
+    if (out->frames < 0)
+        out->frames = out->bench ? 10 : out->headless ? 1 : 0;
+    return CLI_EXIT_OK;
+}

@@ -1,0 +1,78 @@
+/* cli.h - the one command line every chapter binary shares.
+ *
+ *   cli_parse(argc, argv, desc, options)   fill options; CLI_EXIT_* tells the caller what to do
+ *   cli_print_help(desc, stream)           the --help text
+ *
+ * A chapter describes what it adds (renderers, views, extra options) in a
+ * cli_desc; the parser knows the rest. Values are validated here, so the
+ * rest of the course can trust them.
+ */
+#ifndef COMMON_CLI_H
+#define COMMON_CLI_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#define CLI_MAX_EXTRAS 8
+#define CLI_MAX_SIZE 16384
+
+enum {
+    CLI_EXIT_OK = 0,      /* run */
+    CLI_EXIT_RUNTIME = 1, /* a failure while running */
+    CLI_EXIT_USAGE = 2,   /* bad option or input */
+    CLI_EXIT_SKIP = 77,   /* no GL context (CTest's skip code) */
+    CLI_EXIT_DONE = -1,   /* --help printed: exit 0 */
+};
+
+typedef enum cli_backend {
+    CLI_BACKEND_AUTO,   /* window when a display exists, else EGL, else OSMesa */
+    CLI_BACKEND_WINDOW, /* GLFW */
+    CLI_BACKEND_EGL,    /* EGL surfaceless */
+    CLI_BACKEND_OSMESA, /* Mesa's off-screen library */
+} cli_backend;
+
+/* An option a chapter adds: --NAME VALUE, VALUE one of choices (NULL-terminated) or free text. */
+typedef struct cli_extra {
+    const char *name;
+    const char *metavar;
+    const char *help;
+    const char *const *choices;
+    const char *default_value;
+} cli_extra;
+
+typedef struct cli_desc {
+    const char *program;             /* "03_fullscreen_phong" */
+    const char *summary;             /* one sentence for --help */
+    const char *const *renderers;    /* NULL-terminated; the first is the default */
+    const char *const *views;        /* NULL-terminated or NULL; the first is the default */
+    const char *keys;                /* window keys, one per line, for --help */
+    cli_extra extras[CLI_MAX_EXTRAS];
+} cli_desc;
+
+typedef struct cli_options {
+    cli_backend backend;
+    bool headless;
+    int width, height;
+    int frames;           /* 0: until the window closes (headless: 1) */
+    int warmup;           /* frames not timed by --bench */
+    const char *screenshot;
+    const char *scene_path;
+    const char *renderer;
+    const char *view;
+    int lights;           /* -1: the scene's own */
+    uint32_t seed;
+    float time;
+    double cutoff;
+    bool bench;
+    bool gl_debug;        /* KHR_debug on; a GL error fails the run */
+    bool verbose;
+    const char *extra_values[CLI_MAX_EXTRAS];
+} cli_options;
+
+int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out);
+void cli_print_help(const cli_desc *desc, FILE *stream);
+const char *cli_extra_value(const cli_desc *desc, const cli_options *options, const char *name);
+int cli_choice_index(const char *const *choices, const char *value);
+
+#endif

@@ -1,0 +1,115 @@
+/* fbo.c - see fbo.h. */
+#include "fbo.h"
+
+#include "gl_util.h"
+#include "log.h"
+
+#include <string.h>
+
+const char *fbo_status_name(GLenum status)
+{
+    switch (status) {
+    case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
+    case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS: return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
+    default: return "unknown framebuffer status";
+    }
+}
+
+/* glTexImage2D needs a client format and type even when no data is uploaded. */
+static void client_format(GLenum internal, GLenum *format, GLenum *type)
+{
+    switch (internal) {
+    case GL_DEPTH_COMPONENT16:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT32: *format = GL_DEPTH_COMPONENT, *type = GL_UNSIGNED_INT; return;
+    case GL_DEPTH_COMPONENT32F: *format = GL_DEPTH_COMPONENT, *type = GL_FLOAT; return;
+    case GL_DEPTH24_STENCIL8: *format = GL_DEPTH_STENCIL, *type = GL_UNSIGNED_INT_24_8; return;
+    case GL_DEPTH32F_STENCIL8: *format = GL_DEPTH_STENCIL, *type = GL_FLOAT_32_UNSIGNED_INT_24_8_REV; return;
+    case GL_R8UI:
+    case GL_R16UI:
+    case GL_R32UI: *format = GL_RED_INTEGER, *type = GL_UNSIGNED_INT; return;
+    case GL_RG16UI:
+    case GL_RG32UI: *format = GL_RG_INTEGER, *type = GL_UNSIGNED_INT; return;
+    case GL_RGBA16UI:
+    case GL_RGBA32UI: *format = GL_RGBA_INTEGER, *type = GL_UNSIGNED_INT; return;
+    default: *format = GL_RGBA, *type = GL_FLOAT; return;
+    }
+}
+
+static GLuint make_texture(GLenum internal, int width, int height)
+{
+    GLenum format, type;
+    client_format(internal, &format, &type);
+    GLuint t = gl_texture_create();
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)internal, width, height, 0, format, type, NULL);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height)
+{
+    memset(f, 0, sizeof *f);
+    f->width = width;
+    f->height = height;
+    f->id = gl_framebuffer_create();
+    glBindFramebuffer(GL_FRAMEBUFFER, f->id);
+    GLenum draw[FBO_MAX_COLOR];
+    for (int i = 0; i < desc->color_count; i++) {
+        f->color[i] = make_texture(desc->color_formats[i], width, height);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i, GL_TEXTURE_2D, f->color[i], 0);
+        draw[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
+    }
+    f->color_count = desc->color_count;
+    glDrawBuffers(desc->color_count, draw);
+    if (desc->shared_depth || desc->depth_format) {
+        bool stencil = desc->depth_format == GL_DEPTH24_STENCIL8 || desc->depth_format == GL_DEPTH32F_STENCIL8;
+        f->owns_depth = !desc->shared_depth;
+        f->depth = desc->shared_depth ? desc->shared_depth : make_texture(desc->depth_format, width, height);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                               GL_TEXTURE_2D, f->depth, 0);
+    }
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        log_error("framebuffer '%s' (%dx%d) is not complete: %s", desc->name ? desc->name : "?", width, height,
+                  fbo_status_name(status));
+        fbo_destroy(f);
+        return false;
+    }
+    return gl_check("fbo_create");
+}
+
+void fbo_destroy(fbo *f)
+{
+    for (int i = 0; i < f->color_count; i++)
+        gl_texture_destroy(&f->color[i]);
+    if (f->owns_depth)
+        gl_texture_destroy(&f->depth);
+    gl_framebuffer_destroy(&f->id);
+    memset(f, 0, sizeof *f);
+}
+
+bool fbo_read_rgba8(const fbo *f, int attachment, image *out)
+{
+    if (!image_create(out, f->width, f->height))
+        return false;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, f->id);
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)attachment);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, f->width, f->height, GL_RGBA, GL_UNSIGNED_BYTE, out->pixels);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    image_flip_rows(out);
+    return gl_check("fbo_read_rgba8");
+}

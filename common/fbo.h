@@ -1,0 +1,43 @@
+/* fbo.h - framebuffers with texture attachments.
+ *
+ *   fbo_create(fbo, desc, width, height)  textures per desc, completeness checked (status logged by name)
+ *   fbo_destroy(fbo)
+ *   fbo_status_name(status)               "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT", ...
+ *   fbo_read_rgba8(fbo, attachment, img)  read a colour attachment into an image (top row first)
+ *
+ * desc.shared_depth attaches an existing depth texture instead of making one, so a lighting
+ * pass can depth-test against the geometry pass's depth.
+ */
+#ifndef COMMON_FBO_H
+#define COMMON_FBO_H
+
+#include "image.h"
+
+#include <glad/gl.h>
+#include <stdbool.h>
+
+#define FBO_MAX_COLOR 8
+
+typedef struct fbo_desc {
+    GLenum color_formats[FBO_MAX_COLOR]; /* internal formats, e.g. GL_RGBA8, GL_RGBA16F */
+    int color_count;
+    GLenum depth_format; /* GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8, ... or 0 */
+    GLuint shared_depth; /* attach this depth texture instead (depth_format says its format) */
+    const char *name;    /* for messages */
+} fbo_desc;
+
+typedef struct fbo {
+    GLuint id;
+    GLuint color[FBO_MAX_COLOR];
+    int color_count;
+    GLuint depth;
+    bool owns_depth;
+    int width, height;
+} fbo;
+
+bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height);
+void fbo_destroy(fbo *f);
+const char *fbo_status_name(GLenum status);
+bool fbo_read_rgba8(const fbo *f, int attachment, image *out);
+
+#endif

@@ -1,0 +1,298 @@
+/* gl_util.c - see gl_util.h. */
+#include "gl_util.h"
+
+#include "log.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef COURSE_SHADER_DIR
+#define COURSE_SHADER_DIR "shaders"
+#endif
+
+#define MAX_SOURCES 16
+
+static struct {
+    long live_objects;
+    long errors;
+    GLuint fullscreen_vao;
+} state;
+
+const char *gl_shader_dir(void)
+{
+    const char *env = getenv("COURSE_SHADER_DIR");
+    return env && *env ? env : COURSE_SHADER_DIR;
+}
+
+/* ---- sources with #include ------------------------------------------------------------- */
+
+typedef struct source_text {
+    char *text;
+    size_t len, cap;
+    char names[MAX_SOURCES][128]; /* GLSL source-string number -> file name, for error logs */
+    int count;
+} source_text;
+
+static bool text_append(source_text *s, const char *str, size_t n)
+{
+    if (s->len + n + 1 > s->cap) {
+        size_t cap = s->cap ? s->cap * 2 : 4096;
+        while (cap < s->len + n + 1)
+            cap *= 2;
+        char *t = realloc(s->text, cap);
+        if (!t) {
+            log_error("out of memory reading shaders");
+            return false;
+        }
+        s->text = t;
+        s->cap = cap;
+    }
+    memcpy(s->text + s->len, str, n);
+    s->len += n;
+    s->text[s->len] = '\0';
+    return true;
+}
+
+static bool text_printf(source_text *s, const char *fmt, int a, int b)
+{
+    char buf[64];
+    int n = snprintf(buf, sizeof buf, fmt, a, b);
+    return text_append(s, buf, (size_t)n);
+}
+
+static char *read_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    }
+    if (buf)
+        buf[n] = '\0';
+    fclose(f);
+    return buf;
+}
+
+/* Appends shaders/<name> to s; the top-level file keeps its #version line first, then the defines. */
+static bool append_file(source_text *s, const char *name, const char *defines, int depth)
+{
+    if (depth > 4 || s->count >= MAX_SOURCES) {
+        log_error("shaders/%s: includes nested too deeply", name);
+        return false;
+    }
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", gl_shader_dir(), name);
+    char *text = read_file(path);
+    if (!text) {
+        log_error("%s: cannot read shader", path);
+        return false;
+    }
+    int id = s->count++;
+    snprintf(s->names[id], sizeof s->names[id], "shaders/%s", name);
+    bool ok = depth == 0 || text_printf(s, "#line %d %d\n", 1, id);
+    int line_no = 0;
+    for (char *line = text; ok && *line;) {
+        char *end = strchr(line, '\n');
+        size_t n = end ? (size_t)(end - line) + 1 : strlen(line);
+        line_no++;
+        char inc[128];
+        if (sscanf(line, " #include \"%127[^\"]\"", inc) == 1) {
+            ok = append_file(s, inc, NULL, depth + 1) && text_printf(s, "#line %d %d\n", line_no + 1, id);
+        } else {
+            ok = text_append(s, line, n);
+            if (ok && !end)
+                ok = text_append(s, "\n", 1);
+            if (ok && depth == 0 && line_no == 1) {
+                if (strncmp(line, "#version", 8) != 0) {
+                    log_error("%s:1: the first line must be #version", s->names[id]);
+                    ok = false;
+                } else {
+                    for (const char *d = defines; ok && d && *d;) {
+                        const char *e = strchr(d, '\n');
+                        size_t dn = e ? (size_t)(e - d) : strlen(d);
+                        ok = text_append(s, "#define ", 8) && text_append(s, d, dn) && text_append(s, "\n", 1);
+                        d = e ? e + 1 : d + dn;
+                    }
+                    ok = ok && text_printf(s, "#line %d %d\n", 2, id);
+                }
+            }
+        }
+        line = end ? end + 1 : line + n;
+    }
+    free(text);
+    return ok;
+}
+
+/* Mesa writes "S:L(C): error: ..."; print "shaders/file.glsl:L:C: error: ..." instead. */
+static void log_info_log(const source_text *s, const char *what, const char *log)
+{
+    log_error("%s failed:", what);
+    for (const char *line = log; *line;) {
+        const char *end = strchr(line, '\n');
+        int n = end ? (int)(end - line) : (int)strlen(line);
+        int src, ln, col, used = 0;
+        if (sscanf(line, "%d:%d(%d): %n", &src, &ln, &col, &used) == 3 && used > 0 && src >= 0 &&
+            src < s->count)
+            log_error("%s:%d:%d: %.*s", s->names[src], ln, col, n - used, line + used);
+        else if (n > 0)
+            log_error("%.*s", n, line);
+        line = end ? end + 1 : line + n;
+    }
+}
+
+static GLuint compile(GLenum type, const char *name, const char *defines)
+{
+    source_text s = {0};
+    if (!append_file(&s, name, defines, 0)) {
+        free(s.text);
+        return 0;
+    }
+    GLuint sh = glCreateShader(type);
+    const char *src = s.text;
+    glShaderSource(sh, 1, &src, NULL);
+    glCompileShader(sh);
+    GLint ok = 0;
+    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[8192];
+        glGetShaderInfoLog(sh, sizeof log, NULL, log);
+        char what[192];
+        snprintf(what, sizeof what, "compiling shaders/%s", name);
+        log_info_log(&s, what, log);
+        glDeleteShader(sh);
+        sh = 0;
+    }
+    free(s.text);
+    return sh;
+}
+
+GLuint gl_program_load(const char *vert, const char *frag, const char *defines)
+{
+    GLuint vs = compile(GL_VERTEX_SHADER, vert, defines);
+    GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, frag, defines) : 0;
+    if (!fs) {
+        glDeleteShader(vs);
+        return 0;
+    }
+    GLuint p = glCreateProgram();
+    glAttachShader(p, vs);
+    glAttachShader(p, fs);
+    glLinkProgram(p);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096];
+        glGetProgramInfoLog(p, sizeof log, NULL, log);
+        log_error("linking shaders/%s + shaders/%s failed: %s", vert, frag, log);
+        glDeleteProgram(p);
+        return 0;
+    }
+    state.live_objects++;
+    return p;
+}
+
+void gl_program_destroy(GLuint *program)
+{
+    if (*program) {
+        glDeleteProgram(*program);
+        state.live_objects--;
+        *program = 0;
+    }
+}
+
+#define COUNTED_PAIR(kind, gen, del)                                                                         \
+    GLuint gl_##kind##_create(void)                                                                          \
+    {                                                                                                        \
+        GLuint id = 0;                                                                                       \
+        gen(1, &id);                                                                                         \
+        if (id)                                                                                              \
+            state.live_objects++;                                                                            \
+        return id;                                                                                           \
+    }                                                                                                        \
+    void gl_##kind##_destroy(GLuint *id)                                                                     \
+    {                                                                                                        \
+        if (*id) {                                                                                           \
+            del(1, id);                                                                                      \
+            state.live_objects--;                                                                            \
+            *id = 0;                                                                                         \
+        }                                                                                                    \
+    }
+
+COUNTED_PAIR(texture, glGenTextures, glDeleteTextures)
+COUNTED_PAIR(buffer, glGenBuffers, glDeleteBuffers)
+COUNTED_PAIR(framebuffer, glGenFramebuffers, glDeleteFramebuffers)
+COUNTED_PAIR(vertex_array, glGenVertexArrays, glDeleteVertexArrays)
+
+long gl_live_objects(void) { return state.live_objects; }
+
+static const char *error_name(GLenum e)
+{
+    switch (e) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return "unknown GL error";
+    }
+}
+
+bool gl_check(const char *where)
+{
+    bool ok = true;
+    for (GLenum e; (e = glGetError()) != GL_NO_ERROR;) {
+        log_error("GL error %s (0x%04x) after %s", error_name(e), e, where);
+        state.errors++;
+        ok = false;
+    }
+    return ok;
+}
+
+static void GLAD_API_PTR debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                                    const GLchar *message, const void *user)
+{
+    (void)source;
+    (void)id;
+    (void)length;
+    (void)user;
+    if (type == GL_DEBUG_TYPE_ERROR) {
+        state.errors++;
+        log_error("GL error: %s", message);
+    } else if (severity != GL_DEBUG_SEVERITY_NOTIFICATION) {
+        log_warn("GL: %s", message);
+    } else {
+        log_debug("GL: %s", message);
+    }
+}
+
+void gl_debug_enable(void)
+{
+    if (!GLAD_GL_KHR_debug) {
+        log_warn("KHR_debug is missing: GL errors are checked with glGetError after each frame");
+        return;
+    }
+    glEnable(GL_DEBUG_OUTPUT);
+    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    glDebugMessageCallback(debug_callback, NULL);
+}
+
+long gl_debug_error_count(void) { return state.errors; }
+
+void gl_draw_fullscreen(void)
+{
+    if (!state.fullscreen_vao)
+        state.fullscreen_vao = gl_vertex_array_create();
+    glBindVertexArray(state.fullscreen_vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void gl_util_shutdown(void) { gl_vertex_array_destroy(&state.fullscreen_vao); }

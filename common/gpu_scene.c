@@ -1,0 +1,183 @@
+/* gpu_scene.c - see gpu_scene.h. */
+#include "gpu_scene.h"
+
+#include "gl_util.h"
+#include "light.h"
+#include "log.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static bool load_mesh(const scene *s, const scene_mesh *decl, mesh *out)
+{
+    mesh_data data;
+    bool ok = false;
+    char origin[SCENE_PATH_MAX + 32];
+    snprintf(origin, sizeof origin, "%s:%d", s->path, decl->line);
+    switch (decl->kind) {
+    case SCENE_MESH_CUBE: ok = mesh_data_cube(&data); break;
+    case SCENE_MESH_PLANE: ok = mesh_data_plane(&data); break;
+    case SCENE_MESH_SPHERE: ok = mesh_data_sphere(&data, decl->slices, decl->stacks); break;
+    case SCENE_MESH_FILE: ok = mesh_data_load(&data, decl->path, origin); break;
+    }
+    if (!ok)
+        return false;
+    ok = mesh_create(&data, out);
+    mesh_data_destroy(&data);
+    return ok;
+}
+
+bool gpu_scene_create(const scene *src, gpu_scene *out)
+{
+    memset(out, 0, sizeof *out);
+    out->src = src;
+    out->meshes = calloc((size_t)src->mesh_count + 1, sizeof *out->meshes);
+    out->world = calloc((size_t)src->object_count + 1, sizeof *out->world);
+    out->normal_matrix = calloc((size_t)src->object_count + 1, sizeof *out->normal_matrix);
+    out->bounds = calloc((size_t)src->object_count + 1, sizeof *out->bounds);
+    if (!out->meshes || !out->world || !out->normal_matrix || !out->bounds) {
+        log_error("out of memory for the scene's %d objects", src->object_count);
+        gpu_scene_destroy(out);
+        return false;
+    }
+    for (int i = 0; i < src->mesh_count; i++) {
+        if (!load_mesh(src, &src->meshes[i], &out->meshes[i])) {
+            gpu_scene_destroy(out);
+            return false;
+        }
+    }
+    out->light_buffer = gl_buffer_create();
+    out->light_texture = gl_texture_create();
+    return gl_check("gpu_scene_create");
+}
+
+void gpu_scene_destroy(gpu_scene *gs)
+{
+    if (gs->meshes && gs->src)
+        for (int i = 0; i < gs->src->mesh_count; i++)
+            mesh_destroy(&gs->meshes[i]);
+    gl_buffer_destroy(&gs->light_buffer);
+    gl_texture_destroy(&gs->light_texture);
+    free(gs->meshes);
+    free(gs->world);
+    free(gs->normal_matrix);
+    free(gs->bounds);
+    free(gs->lights);
+    free(gs->texels);
+    memset(gs, 0, sizeof *gs);
+}
+
+static void update_view(gpu_scene *gs, int width, int height)
+{
+    const scene_camera *c = &gs->src->camera;
+    frame_view *v = &gs->view;
+    v->width = width;
+    v->height = height;
+    v->near_plane = c->near_plane;
+    v->far_plane = c->far_plane;
+    glm_vec3_copy((float *)c->eye, v->eye);
+    glm_lookat((float *)c->eye, (float *)c->target, (float *)c->up, v->view);
+    glm_perspective(glm_rad(c->fovy_deg), (float)width / (float)height, c->near_plane, c->far_plane, v->proj);
+    glm_mat4_mul(v->proj, v->view, v->view_proj);
+    glm_mat4_inv(v->proj, v->inv_proj);
+    glm_mat4_inv(v->view, v->inv_view);
+    glm_mat4_inv(v->view_proj, v->inv_view_proj);
+}
+
+static void update_objects(gpu_scene *gs, float time)
+{
+    const scene *s = gs->src;
+    for (int i = 0; i < s->object_count; i++) {
+        scene_object_world_at(s, i, time, gs->world[i]);
+        mat4 inv;
+        glm_mat4_inv(gs->world[i], inv);
+        glm_mat4_transpose(inv);
+        glm_mat4_pick3(inv, gs->normal_matrix[i]);
+        /* Bounding sphere: the mesh's radius about its origin, scaled by the largest axis scale. */
+        const scene_object *o = &s->objects[i];
+        float smax = fmaxf(fabsf(o->scale[0]), fmaxf(fabsf(o->scale[1]), fabsf(o->scale[2])));
+        gs->bounds[i][0] = gs->world[i][3][0];
+        gs->bounds[i][1] = gs->world[i][3][1];
+        gs->bounds[i][2] = gs->world[i][3][2];
+        gs->bounds[i][3] = gs->meshes[o->mesh].bound_radius * smax;
+    }
+}
+
+static bool update_lights(gpu_scene *gs, float time, double cutoff)
+{
+    const scene *s = gs->src;
+    if (s->light_count > 0) {
+        gpu_light *l = realloc(gs->lights, (size_t)s->light_count * sizeof *l);
+        float *t = realloc(gs->texels, (size_t)s->light_count * GPU_LIGHT_TEXELS * 4 * sizeof *t);
+        if (l)
+            gs->lights = l;
+        if (t)
+            gs->texels = t;
+        if (!l || !t) {
+            log_error("out of memory for %d lights", s->light_count);
+            return false;
+        }
+    }
+    gs->light_count = gs->culled_count = gs->infinite_count = 0;
+    for (int i = 0; i < s->light_count; i++) {
+        const scene_light *src = &s->lights[i];
+        double r = light_radius(src->kc, src->kl, src->kq, light_peak(src->color, src->intensity), cutoff);
+        if (!(r > 0.0)) {
+            gs->culled_count++;
+            continue;
+        }
+        gpu_light *l = &gs->lights[gs->light_count];
+        float *t = gs->texels + (size_t)gs->light_count * GPU_LIGHT_TEXELS * 4;
+        gs->light_count++;
+        scene_light_position_at(s, i, time, l->position);
+        if (isinf(r) || r > FLT_MAX)
+            gs->infinite_count++;
+        l->radius = r > FLT_MAX ? FLT_MAX : (float)r;
+        glm_vec3_scale((float *)src->color, src->intensity, l->radiance);
+        l->attenuation[0] = src->kc, l->attenuation[1] = src->kl, l->attenuation[2] = src->kq;
+        l->source = i;
+        const float texels[GPU_LIGHT_TEXELS * 4] = {
+            l->position[0], l->position[1], l->position[2], l->radius, l->radiance[0], l->radiance[1],
+            l->radiance[2], 0.0f, src->kc, src->kl, src->kq, 0.0f};
+        memcpy(t, texels, sizeof texels);
+    }
+    /* A texture buffer may not be empty: keep one texel so the binding stays valid with 0 lights. */
+    static const float zero[4] = {0};
+    size_t bytes = (size_t)gs->light_count * GPU_LIGHT_TEXELS * 4 * sizeof(float);
+    glBindBuffer(GL_TEXTURE_BUFFER, gs->light_buffer);
+    glBufferData(GL_TEXTURE_BUFFER, bytes ? (GLsizeiptr)bytes : (GLsizeiptr)sizeof zero,
+                 bytes ? (const void *)gs->texels : zero, GL_STREAM_DRAW);
+    glBindTexture(GL_TEXTURE_BUFFER, gs->light_texture);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, gs->light_buffer);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    return true;
+}
+
+bool gpu_scene_update(gpu_scene *gs, float time, double cutoff, int width, int height)
+{
+    gs->time = time;
+    gs->cutoff = cutoff;
+    update_view(gs, width, height);
+    update_objects(gs, time);
+    return update_lights(gs, time, cutoff);
+}
+
+void gpu_scene_bind_lights(const gpu_scene *gs, GLuint program, int unit)
+{
+    glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+    glBindTexture(GL_TEXTURE_BUFFER, gs->light_texture);
+    glUniform1i(glGetUniformLocation(program, "u_lights"), unit);
+    glUniform1i(glGetUniformLocation(program, "u_light_count"), gs->light_count);
+    glUniform3fv(glGetUniformLocation(program, "u_ambient"), 1, gs->src->ambient);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void gpu_scene_draw_object(const gpu_scene *gs, int index, gpu_object_uniforms loc)
+{
+    glUniformMatrix4fv(loc.model, 1, GL_FALSE, (const float *)gs->world[index]);
+    glUniformMatrix3fv(loc.normal_matrix, 1, GL_FALSE, (const float *)gs->normal_matrix[index]);
+    mesh_draw(&gs->meshes[gs->src->objects[index].mesh]);
+}

@@ -1,0 +1,40 @@
+/* mesh_data.h - triangle meshes on the CPU: the built-in shapes and model files.
+ *
+ *   mesh_data_cube(m)                    corners at +-0.5, flat normals (24 vertices)
+ *   mesh_data_plane(m)                   unit square at y = 0, normal +Y, single-sided
+ *   mesh_data_sphere(m, slices, stacks)  unit UV sphere: 2*slices*(stacks-1) triangles
+ *   mesh_data_icosphere(m, subdivisions) unit-circumradius icosphere (20 * 4^n triangles)
+ *   mesh_data_load(m, path, origin)      a model file through Assimp (OBJ, PLY, glTF, ...);
+ *                                        origin ("scene.scene:7") prefixes error messages
+ *   mesh_data_destroy(m)
+ *   mesh_data_inradius(m)                smallest distance from the origin to a face's plane:
+ *                                        scale a volume mesh by r / inradius to contain the sphere r
+ *
+ * Vertices are interleaved: position xyz, normal xyz (6 floats). Indices are 32-bit.
+ */
+#ifndef COMMON_MESH_DATA_H
+#define COMMON_MESH_DATA_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#define MESH_VERTEX_FLOATS 6
+
+typedef struct mesh_data {
+    float *vertices;
+    uint32_t *indices;
+    int vertex_count;
+    int index_count;
+    float bounds_min[3], bounds_max[3];
+    float bound_radius; /* largest distance of a vertex from the origin */
+} mesh_data;
+
+bool mesh_data_cube(mesh_data *m);
+bool mesh_data_plane(mesh_data *m);
+bool mesh_data_sphere(mesh_data *m, int slices, int stacks);
+bool mesh_data_icosphere(mesh_data *m, int subdivisions);
+bool mesh_data_load(mesh_data *m, const char *path, const char *origin);
+void mesh_data_destroy(mesh_data *m);
+double mesh_data_inradius(const mesh_data *m);
+
+#endif

@@ -1,0 +1,279 @@
+/* platform.c - see platform.h. */
+#include <glad/gl.h>
+
+#include "platform.h"
+
+#include "gl_util.h"
+#include "log.h"
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/osmesa.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define KEY_QUEUE 32
+
+static struct {
+    cli_backend backend;
+    GLFWwindow *window;
+    EGLDisplay egl_display;
+    EGLContext egl_context;
+    OSMesaContext osmesa;
+    unsigned char osmesa_pixel[4]; /* OSMesa wants a colour buffer; we never draw to it */
+    int keys[KEY_QUEUE];
+    int key_count;
+} state;
+
+double platform_time(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* ---- GLFW ------------------------------------------------------------------------------ */
+
+static void glfw_error(int code, const char *message)
+{
+    log_debug("GLFW error 0x%x: %s", code, message);
+}
+
+static void glfw_key(GLFWwindow *w, int key, int scancode, int action, int mods)
+{
+    (void)w;
+    (void)scancode;
+    (void)mods;
+    if (action != GLFW_PRESS || state.key_count == KEY_QUEUE)
+        return;
+    state.keys[state.key_count++] = key == GLFW_KEY_ESCAPE ? PLATFORM_KEY_ESCAPE : key;
+}
+
+static int create_glfw(const platform_desc *desc)
+{
+    glfwSetErrorCallback(glfw_error);
+    if (!glfwInit()) {
+        log_error("cannot open a window: no display (DISPLAY is not set or the X server is unreachable); "
+                  "run with --headless");
+        return CLI_EXIT_USAGE;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, desc->gl_debug ? GLFW_TRUE : GLFW_FALSE);
+    state.window = glfwCreateWindow(desc->width, desc->height, desc->title, NULL, NULL);
+    if (!state.window) {
+        const char *why = NULL;
+        glfwGetError(&why);
+        log_error("cannot create a GL 3.3 core window: %s", why ? why : "unknown reason");
+        glfwTerminate();
+        return CLI_EXIT_SKIP;
+    }
+    glfwMakeContextCurrent(state.window);
+    glfwSwapInterval(0); /* measure the renderer, not the display's refresh */
+    glfwSetKeyCallback(state.window, glfw_key);
+    if (!gladLoadGL(glfwGetProcAddress)) {
+        log_error("cannot load GL functions through GLFW");
+        return CLI_EXIT_SKIP;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* ---- EGL surfaceless ---------------------------------------------------------------------- */
+
+static bool create_egl(void)
+{
+    state.egl_display = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
+    EGLint major, minor;
+    if (state.egl_display == EGL_NO_DISPLAY || !eglInitialize(state.egl_display, &major, &minor)) {
+        log_debug("EGL: no surfaceless display (0x%x)", eglGetError());
+        return false;
+    }
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+        log_debug("EGL: OpenGL API unavailable (0x%x)", eglGetError());
+        return false;
+    }
+    const EGLint attrs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    state.egl_context = eglCreateContext(state.egl_display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attrs);
+    if (state.egl_context == EGL_NO_CONTEXT ||
+        !eglMakeCurrent(state.egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE, state.egl_context)) {
+        log_debug("EGL: cannot create a 3.3 core context (0x%x)", eglGetError());
+        return false;
+    }
+    if (!gladLoadGL((GLADloadfunc)eglGetProcAddress)) {
+        log_debug("EGL: cannot load GL functions");
+        return false;
+    }
+    return true;
+}
+
+static void destroy_egl(void)
+{
+    if (state.egl_display == EGL_NO_DISPLAY)
+        return;
+    eglMakeCurrent(state.egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (state.egl_context != EGL_NO_CONTEXT)
+        eglDestroyContext(state.egl_display, state.egl_context);
+#if !defined(__SANITIZE_ADDRESS__)
+    /* Under AddressSanitizer, eglTerminate unloads the driver before LeakSanitizer can name its frames. */
+    eglTerminate(state.egl_display);
+#endif
+    state.egl_context = EGL_NO_CONTEXT;
+    state.egl_display = EGL_NO_DISPLAY;
+}
+
+/* ---- OSMesa ------------------------------------------------------------------------------- */
+
+static bool create_osmesa(void)
+{
+    const int attrs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                         OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    state.osmesa = OSMesaCreateContextAttribs(attrs, NULL);
+    if (!state.osmesa) {
+        log_debug("OSMesa: cannot create a 3.3 core context");
+        return false;
+    }
+    if (!OSMesaMakeCurrent(state.osmesa, state.osmesa_pixel, GL_UNSIGNED_BYTE, 1, 1)) {
+        log_debug("OSMesa: cannot make the context current");
+        return false;
+    }
+    if (!gladLoadGL((GLADloadfunc)OSMesaGetProcAddress)) {
+        log_debug("OSMesa: cannot load GL functions");
+        return false;
+    }
+    return true;
+}
+
+/* ---- public ------------------------------------------------------------------------------- */
+
+static bool display_available(void)
+{
+    const char *x = getenv("DISPLAY");
+    const char *wl = getenv("WAYLAND_DISPLAY");
+    return (x && *x) || (wl && *wl);
+}
+
+int platform_create(const platform_desc *desc)
+{
+    memset(&state, 0, sizeof state);
+    state.egl_display = EGL_NO_DISPLAY;
+    state.egl_context = EGL_NO_CONTEXT;
+    cli_backend b = desc->backend;
+    if (b == CLI_BACKEND_AUTO || b == CLI_BACKEND_WINDOW) {
+        if (!display_available()) {
+            log_error("no display to open a window on (DISPLAY is not set): run with --headless");
+            return CLI_EXIT_USAGE;
+        }
+        int rc = create_glfw(desc);
+        if (rc != CLI_EXIT_OK)
+            return rc;
+        state.backend = CLI_BACKEND_WINDOW;
+    } else {
+        bool ok = false;
+        if (b == CLI_BACKEND_EGL) {
+            ok = create_egl();
+            if (!ok) {
+                destroy_egl();
+                log_info("EGL could not make a GL 3.3 core context; falling back to OSMesa");
+                b = CLI_BACKEND_OSMESA;
+            }
+        }
+        if (b == CLI_BACKEND_OSMESA)
+            ok = create_osmesa();
+        if (!ok) {
+            log_error("no GL 3.3 core context could be created (tried %s); is Mesa (libgl1-mesa-dri, "
+                      "libegl-mesa0, libosmesa6) installed?",
+                      desc->backend == CLI_BACKEND_EGL ? "EGL and OSMesa" : "OSMesa");
+            platform_destroy();
+            return CLI_EXIT_SKIP;
+        }
+        state.backend = b;
+    }
+    if (desc->gl_debug)
+        gl_debug_enable();
+    log_debug("GL %s, %s, backend %s", (const char *)glGetString(GL_VERSION),
+              (const char *)glGetString(GL_RENDERER), platform_backend_name());
+    return CLI_EXIT_OK;
+}
+
+void platform_destroy(void)
+{
+    if (state.window) {
+        glfwDestroyWindow(state.window);
+        glfwTerminate();
+        state.window = NULL;
+    }
+    destroy_egl();
+    if (state.osmesa) {
+        OSMesaDestroyContext(state.osmesa);
+        state.osmesa = NULL;
+    }
+}
+
+const char *platform_backend_name(void)
+{
+    switch (state.backend) {
+    case CLI_BACKEND_WINDOW: return "glfw";
+    case CLI_BACKEND_EGL: return "egl";
+    case CLI_BACKEND_OSMESA: return "osmesa";
+    default: return "none";
+    }
+}
+
+bool platform_is_windowed(void) { return state.window != NULL; }
+
+void platform_framebuffer_size(int *width, int *height)
+{
+    if (state.window)
+        glfwGetFramebufferSize(state.window, width, height);
+}
+
+bool platform_should_close(void) { return state.window && glfwWindowShouldClose(state.window); }
+
+void platform_poll(void)
+{
+    if (!state.window)
+        return;
+    glfwPollEvents();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(state.window, &w, &h);
+    /* Minimised: nothing to draw until the window comes back. */
+    while ((w == 0 || h == 0) && !glfwWindowShouldClose(state.window)) {
+        glfwWaitEvents();
+        glfwGetFramebufferSize(state.window, &w, &h);
+    }
+}
+
+void platform_present(GLuint fbo, int width, int height)
+{
+    if (!state.window)
+        return;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glfwSwapBuffers(state.window);
+}
+
+void platform_set_title(const char *text)
+{
+    if (state.window)
+        glfwSetWindowTitle(state.window, text);
+}
+
+int platform_take_key(void)
+{
+    if (state.key_count == 0)
+        return 0;
+    int k = state.keys[0];
+    memmove(state.keys, state.keys + 1, (size_t)(--state.key_count) * sizeof state.keys[0]);
+    return k;
+}

@@ -1,0 +1,56 @@
+/* platform.h - a GL 3.3+ core context on one of three backends, and the window around it.
+ *
+ *   platform_create(desc)          returns CLI_EXIT_OK, CLI_EXIT_USAGE (no display: use --headless)
+ *                                  or CLI_EXIT_SKIP (no GL context could be made); logs why
+ *   platform_destroy()
+ *   platform_backend_name()        "glfw", "egl" or "osmesa"
+ *   platform_is_windowed()
+ *   platform_framebuffer_size(&w, &h)   pixels, not screen units (HiDPI); 0x0 when minimised
+ *   platform_should_close()
+ *   platform_poll()                events; sleeps while the window is minimised
+ *   platform_present(fbo, w, h)    copy the app's framebuffer to the window and swap
+ *   platform_set_title(text)
+ *   platform_take_key()            next key pressed since the last call (PLATFORM_KEY_*), or 0
+ *   platform_time()                monotonic seconds
+ *
+ * Every chapter renders into its own framebuffer; the window only shows it.
+ * That keeps one code path for windowed and headless runs.
+ */
+#ifndef COMMON_PLATFORM_H
+#define COMMON_PLATFORM_H
+
+#include "cli.h"
+
+#include <glad/gl.h>
+#include <stdbool.h>
+
+/* Letters and digits are their ASCII upper-case codes ('F', '1'). */
+enum {
+    PLATFORM_KEY_ESCAPE = 256,
+    PLATFORM_KEY_SPACE = ' ',
+    PLATFORM_KEY_UP = 265,
+    PLATFORM_KEY_DOWN = 264,
+    PLATFORM_KEY_LEFT = 263,
+    PLATFORM_KEY_RIGHT = 262,
+};
+
+typedef struct platform_desc {
+    cli_backend backend;
+    int width, height;
+    const char *title;
+    bool gl_debug;
+} platform_desc;
+
+int platform_create(const platform_desc *desc);
+void platform_destroy(void);
+const char *platform_backend_name(void);
+bool platform_is_windowed(void);
+void platform_framebuffer_size(int *width, int *height);
+bool platform_should_close(void);
+void platform_poll(void);
+void platform_present(GLuint fbo, int width, int height);
+void platform_set_title(const char *text);
+int platform_take_key(void);
+double platform_time(void);
+
+#endif

@@ -1,0 +1,99 @@
+/* scene.h - the course's text scene format (docs/scene-format.md).
+ *
+ *   scene_load(path, scene)            parse a file; false + one "file:line: message" on error
+ *   scene_parse_string(text, name, base_dir, scene)
+ *                                      parse text already in memory (tests, fuzzing)
+ *   scene_destroy(scene)               free what a successful parse allocated
+ *   scene_object_world_at(scene, i, t, out)   world matrix T*Ry*S of object i at time t
+ *   scene_light_position_at(scene, i, t, out) position of light i at time t
+ *   scene_add_light(scene, light)      append a light (used by the --lights generator)
+ *
+ * Everything is linear RGB, right-handed, +Y up; angles in the file are
+ * degrees, stored here as given (degrees).
+ */
+#ifndef COMMON_SCENE_H
+#define COMMON_SCENE_H
+
+#include <stdbool.h>
+
+#include <cglm/cglm.h>
+
+#define SCENE_NAME_MAX 64
+#define SCENE_PATH_MAX 1024
+
+typedef enum scene_mesh_kind {
+    SCENE_MESH_CUBE,
+    SCENE_MESH_PLANE,
+    SCENE_MESH_SPHERE,
+    SCENE_MESH_FILE,
+} scene_mesh_kind;
+
+typedef struct scene_key {
+    float time;
+    vec3 position;
+} scene_key;
+
+typedef struct scene_camera {
+    vec3 eye, target, up; /* up defaults to 0 1 0 */
+    float fovy_deg;       /* vertical, default 60 */
+    float near_plane;     /* default 0.1 */
+    float far_plane;      /* default 100 */
+} scene_camera;
+
+typedef struct scene_mesh {
+    char name[SCENE_NAME_MAX];
+    scene_mesh_kind kind;
+    int slices, stacks;         /* sphere only; extension "sphere [SLICES STACKS]", default 32 16 */
+    char path[SCENE_PATH_MAX];  /* file only: resolved relative to the scene file's folder */
+    int line;                   /* line of the declaration, for later error messages */
+} scene_mesh;
+
+typedef struct scene_material {
+    char name[SCENE_NAME_MAX];
+    vec3 albedo;
+    float specular;  /* default 0 */
+    float shininess; /* default 32 */
+} scene_material;
+
+typedef struct scene_object {
+    int mesh;     /* index into scene.meshes */
+    int material; /* index into scene.materials */
+    vec3 position;
+    float rotate_y_deg;
+    vec3 scale; /* default 1 1 1 */
+    scene_key *keys; /* sorted by time; NULL when static */
+    int key_count;
+} scene_object;
+
+typedef struct scene_light {
+    vec3 position;
+    vec3 color;      /* default 1 1 1 */
+    float intensity; /* default 1 */
+    float kc, kl, kq; /* default 1 0.14 0.07 */
+    scene_key *keys;
+    int key_count;
+} scene_light;
+
+typedef struct scene {
+    char path[SCENE_PATH_MAX]; /* as given to scene_load, or the name given to scene_parse_string */
+    scene_camera camera;
+    vec3 ambient;
+    scene_mesh *meshes;
+    int mesh_count;
+    scene_material *materials;
+    int material_count;
+    scene_object *objects;
+    int object_count;
+    scene_light *lights;
+    int light_count;
+} scene;
+
+bool scene_load(const char *path, scene *out);
+bool scene_parse_string(const char *text, const char *name, const char *base_dir, scene *out);
+void scene_destroy(scene *s);
+
+void scene_object_world_at(const scene *s, int index, float time, mat4 out);
+void scene_light_position_at(const scene *s, int index, float time, vec3 out);
+bool scene_add_light(scene *s, const scene_light *light);
+
+#endif

@@ -1,0 +1,60 @@
+// shading.glsl - the one shading model every renderer uses (docs/00_forward.md has the formulas).
+// Included by forward.frag and every deferred lighting shader, never copied.
+
+uniform samplerBuffer u_lights; // three RGBA32F texels per light: pos+radius, radiance, attenuation
+uniform int u_light_count;
+uniform vec3 u_ambient;
+
+struct light_data {
+    vec3 position;
+    float radius;
+    vec3 radiance;    // intensity * colour
+    vec3 attenuation; // kc, kl, kq
+};
+
+light_data light_fetch(int i)
+{
+    vec4 a = texelFetch(u_lights, 3 * i);
+    vec4 b = texelFetch(u_lights, 3 * i + 1);
+    vec4 c = texelFetch(u_lights, 3 * i + 2);
+    return light_data(a.xyz, a.w, b.rgb, c.xyz);
+}
+
+// normalize() of a zero vector is NaN: degenerate input falls back instead.
+vec3 safe_normalize(vec3 v, vec3 fallback)
+{
+    float len2 = dot(v, v);
+    return len2 > 1e-30 ? v * inversesqrt(len2) : fallback;
+}
+
+// Light i's contribution at p (world space), unit normal n, unit view vector v.
+vec3 shade_light(light_data L, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess)
+{
+    vec3 to_light = L.position - p;
+    float d = length(to_light);
+    if (d > L.radius)
+        return vec3(0.0);
+    // A light exactly on the surface (d = 0) lights it head-on, with f(0) = 1 / kc.
+    vec3 l = d > 0.0 ? to_light / d : n;
+    float ndl = dot(n, l);
+    // Both terms vanish when n.l <= 0: no diffuse, and no specular leaking round the terminator.
+    if (ndl <= 0.0)
+        return vec3(0.0);
+    vec3 h = safe_normalize(l + v, n);
+    float f = 1.0 / (L.attenuation.x + (L.attenuation.y + L.attenuation.z * d) * d);
+    return f * L.radiance * (ndl * albedo + specular * pow(max(dot(n, h), 0.0), shininess));
+}
+
+vec3 shade_ambient(vec3 albedo)
+{
+    return u_ambient * albedo;
+}
+
+// Linear [0,1] to the exact sRGB curve; the 8-bit target then rounds to 255 levels.
+vec3 display_encode(vec3 c)
+{
+    c = clamp(c, 0.0, 1.0);
+    vec3 lo = 12.92 * c;
+    vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+    return mix(hi, lo, lessThanEqual(c, vec3(0.0031308)));
+}

@@ -1,0 +1,63 @@
+# Golden and agreement tests (label golden): headless renders at a small size.
+#
+#   course_golden_test(NAME BINARY TOLERANCE MAX_FRACTION [ARGS...])
+#       BINARY's picture must match tests/golden/NAME.png. `update-goldens` rewrites these.
+#   course_agreement_test(NAME TOLERANCE MAX_FRACTION BINARY_A ARGS_A... VS BINARY_B ARGS_B...)
+#       two renderings of the same frame must agree.
+#
+# Every render runs with --gl-debug, so a GL error fails the test.
+# Tolerances: llvmpipe is deterministic (byte-identical PNGs across runs and thread counts), so a
+# golden must match to 1/255 on 99.99 % of pixels; the slack only absorbs a Mesa update that
+# rounds a handful of pixels the other way.
+
+set(COURSE_GOLDEN_SIZE 320x240)
+set(COURSE_TEST_OUT ${CMAKE_BINARY_DIR}/test-out)
+set(COURSE_RENDER_ARGS --headless --size ${COURSE_GOLDEN_SIZE} --frames 1 --gl-debug)
+
+function(course_golden_test name binary tolerance fraction)
+  add_test(NAME golden.${name}
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_golden.sh $<TARGET_FILE:imgdiff> ${COURSE_TEST_OUT}
+            ${name} ${CMAKE_SOURCE_DIR}/tests/golden/${name}.png ${tolerance} ${fraction}
+            -- $<TARGET_FILE:${binary}> ${COURSE_RENDER_ARGS} ${ARGN}
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(golden.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  set_property(GLOBAL APPEND PROPERTY COURSE_GOLDEN_CASES
+    "${name}|$<TARGET_FILE:${binary}>|${COURSE_RENDER_ARGS};${ARGN}")
+endfunction()
+
+function(course_agreement_test name tolerance fraction)
+  set(cmd_a "")
+  set(cmd_b "")
+  set(side a)
+  foreach(arg ${ARGN})
+    if(arg STREQUAL "VS")
+      set(side b)
+    elseif(side STREQUAL "a")
+      list(APPEND cmd_a ${arg})
+    else()
+      list(APPEND cmd_b ${arg})
+    endif()
+  endforeach()
+  list(POP_FRONT cmd_a bin_a)
+  list(POP_FRONT cmd_b bin_b)
+  add_test(NAME agree.${name}
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_agreement.sh $<TARGET_FILE:imgdiff> ${COURSE_TEST_OUT}
+            ${name} ${tolerance} ${fraction}
+            -- $<TARGET_FILE:${bin_a}> ${COURSE_RENDER_ARGS} ${cmd_a}
+            -- $<TARGET_FILE:${bin_b}> ${COURSE_RENDER_ARGS} ${cmd_b}
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(agree.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+endfunction()
+
+# Every chapter's own picture on the default scene.
+foreach(chapter ${COURSE_CHAPTERS})
+  course_golden_test(${chapter} ${chapter} 1 0.0001)
+endforeach()
+
+# Chapter 00: the optimisations change the speed, never the picture.
+foreach(variant forward-naive forward-prepass forward-lists)
+  course_agreement_test(00_${variant} 1 0.0001
+    00_forward --renderer forward VS 00_forward --renderer ${variant})
+endforeach()
+course_agreement_test(00_osmesa_vs_egl 1 0.0001
+  00_forward VS 00_forward --headless=osmesa)
