@@ -238,7 +238,7 @@ int app_run(const app_desc *desc, int argc, char **argv)
     if (!ok && rc == CLI_EXIT_OK)
         rc = CLI_EXIT_RUNTIME;
 
-    bool paused = false, running = ok;
+    bool paused = opt.paused, running = ok;
     double last_clock = platform_time(), title_clock = 0.0, ms_sum = 0.0;
     int ms_n = 0;
     long total = (long)opt.frames + (opt.bench ? opt.warmup : 0);

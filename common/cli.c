@@ -71,6 +71,7 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --lights N               replace the scene's lights by N generated ones\n"
             "  --seed S                 seed of the light generator (default 1)\n"
             "  --time T                 animation time in seconds (default 0)\n"
+            "  --paused                 window: start with the animation stopped at --time\n"
             "  --cutoff C               attenuation cut-off (default 5/256 = %.6f; 0 = exact, no cut-off)\n"
             "  --bench                  time frames (glFinish + monotonic clock) and print a 'bench:' line\n"
             "  --warmup N               untimed frames before --bench timing (default 3)\n"
@@ -186,6 +187,8 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
             return usage_error(desc, "unknown headless backend '%s' (egl or osmesa)", a + 11);
         } else if (strcmp(a, "--bench") == 0) {
             out->bench = true;
+        } else if (strcmp(a, "--paused") == 0) {
+            out->paused = true;
         } else if (strcmp(a, "--gl-debug") == 0) {
             out->gl_debug = true;
         } else if (strcmp(a, "--verbose") == 0) {
@@ -194,7 +197,7 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
             if (!(v = option_value(argc, argv, &i, "--size")))
                 return usage_error(desc, "%s needs a value WxH", a);
             if (!parse_size(v, &out->width, &out->height))
-                return usage_error(desc, "bad --size '%s': expected WxH, each 1..16384", v);
+                return usage_error(desc, "bad --size '%s': expected WxH, each 1..65536", v);
         } else if (is_option(a, "--frames")) {
             if (!(v = option_value(argc, argv, &i, "--frames")) || !parse_int(v, 1, INT_MAX, &out->frames))
                 return usage_error(desc, "bad --frames '%s': expected a whole number >= 1", v ? v : "");

@@ -15,7 +15,7 @@
 #include <stdio.h>
 
 #define CLI_MAX_EXTRAS 8
-#define CLI_MAX_SIZE 16384
+#define CLI_MAX_SIZE 65536 /* a sanity bound; the GL limit is checked once a context exists */
 
 enum {
     CLI_EXIT_OK = 0,      /* run */
@@ -65,6 +65,7 @@ typedef struct cli_options {
     float time;
     double cutoff;
     bool bench;
+    bool paused;          /* window: start with the animation stopped at --time */
     bool gl_debug;        /* KHR_debug on; a GL error fails the run */
     bool verbose;
     const char *extra_values[CLI_MAX_EXTRAS];

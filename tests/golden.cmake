@@ -21,8 +21,9 @@ function(course_golden_test name binary tolerance fraction)
             -- $<TARGET_FILE:${binary}> ${COURSE_RENDER_ARGS} ${ARGN}
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(golden.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
-  set_property(GLOBAL APPEND PROPERTY COURSE_GOLDEN_CASES
-    "${name}|$<TARGET_FILE:${binary}>|${COURSE_RENDER_ARGS};${ARGN}")
+  # One list entry per case: fields joined by '|', arguments by '@' (';' would split the entry).
+  string(REPLACE ";" "@" args "${COURSE_RENDER_ARGS};${ARGN}")
+  set_property(GLOBAL APPEND PROPERTY COURSE_GOLDEN_CASES "${name}|$<TARGET_FILE:${binary}>|${args}")
 endfunction()
 
 function(course_agreement_test name tolerance fraction)

@@ -1,0 +1,26 @@
+# Platform and command-line tests: every shader validates, every binary answers --help and
+# rejects bad input with exit 2 and one line, and a chapter runs in a real window under Xvfb.
+
+add_test(NAME shaders.glslang COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_glslang.sh ${CMAKE_SOURCE_DIR}/shaders)
+set_tests_properties(shaders.glslang PROPERTIES LABELS unit)
+
+foreach(chapter ${COURSE_CHAPTERS})
+  add_test(NAME cli.${chapter} COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_cli.sh
+           $<TARGET_FILE:${chapter}> ${CMAKE_SOURCE_DIR}
+           WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(cli.${chapter} PROPERTIES LABELS unit SKIP_RETURN_CODE 77)
+endforeach()
+
+# The window path: GLFW under Xvfb, a few frames, and the last one must equal the headless golden.
+find_program(XVFB_RUN xvfb-run)
+if(XVFB_RUN)
+  foreach(chapter ${COURSE_CHAPTERS})
+    add_test(NAME window.${chapter}
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_golden.sh $<TARGET_FILE:imgdiff> ${COURSE_TEST_OUT}
+              window.${chapter} ${CMAKE_SOURCE_DIR}/tests/golden/${chapter}.png 1 0.0001
+              -- ${XVFB_RUN} -a -s "-screen 0 1280x1024x24"
+                 $<TARGET_FILE:${chapter}> --size ${COURSE_GOLDEN_SIZE} --frames 3 --paused --gl-debug
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(window.${chapter} PROPERTIES LABELS window SKIP_RETURN_CODE 77 RUN_SERIAL TRUE)
+  endforeach()
+endif()

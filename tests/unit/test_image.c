@@ -1,0 +1,436 @@
+/* test_image.c - PNG round trip, atomic writes, and the statistics that golden tests rely on. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "image.h"
+
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* Statistics are sums of small integers divided once, so they match the hand computation closely. */
+#define EPS 1e-9
+/* cmocka's float assertion works in single precision; these are doubles. */
+#define ASSERT_NEAR(got, want) assert_true(fabs((got) - (want)) <= EPS)
+
+static char tmp_dir[64];
+
+static int setup_dir(void **state)
+{
+    (void)state;
+    strcpy(tmp_dir, "/tmp/test_image_XXXXXX");
+    return mkdtemp(tmp_dir) ? 0 : -1;
+}
+
+static int teardown_dir(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp_dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static void path_in_tmp(const char *name, char *out, size_t size)
+{
+    snprintf(out, size, "%s/%s", tmp_dir, name);
+}
+
+static void set_pixel(image *img, int x, int y, int r, int g, int b, int a)
+{
+    unsigned char *p = img->pixels + 4 * ((size_t)y * (size_t)img->width + (size_t)x);
+    p[0] = (unsigned char)r;
+    p[1] = (unsigned char)g;
+    p[2] = (unsigned char)b;
+    p[3] = (unsigned char)a;
+}
+
+static const unsigned char *pixel_at(const image *img, int x, int y)
+{
+    return img->pixels + 4 * ((size_t)y * (size_t)img->width + (size_t)x);
+}
+
+/* Distinct values everywhere, including alpha, so a swapped channel or row cannot go unnoticed. */
+static void fill_pattern(image *img)
+{
+    for (int y = 0; y < img->height; ++y)
+        for (int x = 0; x < img->width; ++x)
+            set_pixel(img, x, y, 20 * x + 3, 40 * y + 7, (x * 7 + y * 13) % 256, 255 - 10 * x - y);
+}
+
+static long file_size(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 ? (long)st.st_size : -1;
+}
+
+/* No PATH.tmp-* file may survive a write, whether it succeeded or not. */
+static int count_temp_files(void)
+{
+    char cmd[160];
+    snprintf(cmd, sizeof cmd, "ls -a '%s' | grep -c '\\.tmp-'", tmp_dir);
+    FILE *p = popen(cmd, "r");
+    int n = -1;
+    if (p) {
+        if (fscanf(p, "%d", &n) != 1)
+            n = -1;
+        pclose(p);
+    }
+    return n;
+}
+
+static void test_create_rejects_bad_size(void **state)
+{
+    (void)state;
+    image img;
+    assert_false(image_create(&img, 0, 4));
+    assert_null(img.pixels);
+    assert_false(image_create(&img, 3, -1));
+    assert_true(image_create(&img, 3, 2));
+    assert_int_equal(img.width, 3);
+    assert_int_equal(img.height, 2);
+    for (int i = 0; i < 3 * 2 * 4; ++i)
+        assert_int_equal(img.pixels[i], 0);
+    image_destroy(&img);
+    assert_null(img.pixels);
+}
+
+static void test_round_trip(void **state)
+{
+    (void)state;
+    char path[128];
+    path_in_tmp("round.png", path, sizeof path);
+    image src, back;
+    assert_true(image_create(&src, 7, 5));
+    fill_pattern(&src);
+    assert_true(image_write_png(path, &src));
+    assert_true(image_load_png(path, &back));
+    assert_int_equal(back.width, 7);
+    assert_int_equal(back.height, 5);
+    assert_memory_equal(back.pixels, src.pixels, 7 * 5 * 4);
+    assert_int_equal(count_temp_files(), 0);
+    image_destroy(&src);
+    image_destroy(&back);
+}
+
+static void test_write_replaces_old_file(void **state)
+{
+    (void)state;
+    char path[128];
+    path_in_tmp("replace.png", path, sizeof path);
+    image first, second, back;
+    assert_true(image_create(&first, 2, 2));
+    assert_true(image_create(&second, 3, 1));
+    fill_pattern(&second);
+    assert_true(image_write_png(path, &first));
+    assert_true(image_write_png(path, &second));
+    assert_true(image_load_png(path, &back));
+    assert_int_equal(back.width, 3);
+    assert_memory_equal(back.pixels, second.pixels, 3 * 1 * 4);
+    image_destroy(&first);
+    image_destroy(&second);
+    image_destroy(&back);
+}
+
+static void test_load_missing_or_garbage(void **state)
+{
+    (void)state;
+    char path[128];
+    image img;
+    path_in_tmp("missing.png", path, sizeof path);
+    assert_false(image_load_png(path, &img));
+    assert_null(img.pixels);
+
+    path_in_tmp("garbage.png", path, sizeof path);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fputs("not a png at all", f);
+    fclose(f);
+    assert_false(image_load_png(path, &img));
+    assert_null(img.pixels);
+}
+
+/* Root ignores permissions, so the failures are structural: a path that is a directory, a parent that is a
+ * file, and a write cut short by the file-size limit (which behaves like a full disk). */
+static void test_write_fails_on_directory_target(void **state)
+{
+    (void)state;
+    char dir[128], inside[160];
+    path_in_tmp("target_dir.png", dir, sizeof dir);
+    assert_int_equal(mkdir(dir, 0755), 0);
+    snprintf(inside, sizeof inside, "%s/keep", dir);
+    FILE *f = fopen(inside, "w");
+    assert_non_null(f);
+    fclose(f);
+
+    image img;
+    assert_true(image_create(&img, 4, 4));
+    assert_false(image_write_png(dir, &img));
+    struct stat st;
+    assert_int_equal(stat(dir, &st), 0);
+    assert_true(S_ISDIR(st.st_mode));
+    assert_int_equal(file_size(inside), 0);
+    assert_int_equal(count_temp_files(), 0);
+    image_destroy(&img);
+}
+
+static void test_write_fails_when_parent_is_file(void **state)
+{
+    (void)state;
+    char parent[128], path[160];
+    path_in_tmp("plain_file", parent, sizeof parent);
+    FILE *f = fopen(parent, "w");
+    assert_non_null(f);
+    fputs("x", f);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/out.png", parent);
+
+    image img;
+    assert_true(image_create(&img, 4, 4));
+    assert_false(image_write_png(path, &img));
+    assert_int_equal(file_size(parent), 1);
+    image_destroy(&img);
+}
+
+static void test_write_failure_keeps_old_file(void **state)
+{
+    (void)state;
+    char path[128];
+    path_in_tmp("keep.png", path, sizeof path);
+    image small, noisy, back;
+    assert_true(image_create(&small, 2, 2));
+    fill_pattern(&small);
+    assert_true(image_write_png(path, &small));
+    long old_size = file_size(path);
+    assert_true(old_size > 0);
+
+    /* Noise does not compress, so this PNG is far larger than the limit set below. */
+    assert_true(image_create(&noisy, 64, 64));
+    srand(12345);
+    for (int i = 0; i < 64 * 64 * 4; ++i)
+        noisy.pixels[i] = (unsigned char)(rand() & 0xff);
+
+    struct rlimit saved, limited;
+    assert_int_equal(getrlimit(RLIMIT_FSIZE, &saved), 0);
+    limited = saved;
+    limited.rlim_cur = 1024;
+    void (*old_handler)(int) = signal(SIGXFSZ, SIG_IGN); /* get EFBIG instead of being killed */
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &limited), 0);
+    bool ok = image_write_png(path, &noisy);
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &saved), 0);
+    signal(SIGXFSZ, old_handler);
+
+    assert_false(ok);
+    assert_int_equal(file_size(path), old_size);
+    assert_true(image_load_png(path, &back));
+    assert_memory_equal(back.pixels, small.pixels, 2 * 2 * 4);
+    assert_int_equal(count_temp_files(), 0);
+    image_destroy(&small);
+    image_destroy(&noisy);
+    image_destroy(&back);
+}
+
+static void test_flip_rows(void **state)
+{
+    (void)state;
+    image img, orig;
+    for (int h = 1; h <= 4; ++h) { /* odd heights keep the middle row in place */
+        assert_true(image_create(&img, 3, h));
+        assert_true(image_create(&orig, 3, h));
+        fill_pattern(&img);
+        memcpy(orig.pixels, img.pixels, (size_t)3 * h * 4);
+        image_flip_rows(&img);
+        for (int y = 0; y < h; ++y)
+            assert_memory_equal(pixel_at(&img, 0, y), pixel_at(&orig, 0, h - 1 - y), 3 * 4);
+        image_flip_rows(&img);
+        assert_memory_equal(img.pixels, orig.pixels, (size_t)3 * h * 4);
+        image_destroy(&img);
+        image_destroy(&orig);
+    }
+}
+
+static void test_compare_identical(void **state)
+{
+    (void)state;
+    image a, b, heat;
+    assert_true(image_create(&a, 5, 4));
+    assert_true(image_create(&b, 5, 4));
+    fill_pattern(&a);
+    memcpy(b.pixels, a.pixels, 5 * 4 * 4);
+    b.pixels[3] = 0; /* alpha is not compared */
+    image_stats s;
+    assert_true(image_compare(&a, &b, NULL, 0, &s, &heat));
+    assert_int_equal(s.pixels, 20);
+    assert_int_equal(s.max_abs, 0);
+    assert_int_equal(s.max_x, 0);
+    assert_int_equal(s.max_y, 0);
+    assert_true(s.mean_abs == 0.0);
+    assert_true(s.rmse == 0.0);
+    assert_true(isinf(s.psnr) && s.psnr > 0);
+    assert_int_equal(s.over, 0);
+    assert_true(s.frac_over == 0.0);
+    assert_int_equal(heat.width, 5);
+    assert_int_equal(heat.height, 4);
+    for (int i = 0; i < 20; ++i) {
+        const unsigned char *p = heat.pixels + 4 * i;
+        assert_true(p[0] == 0 && p[1] == 0 && p[2] == 0 && p[3] == 255);
+    }
+    image_destroy(&a);
+    image_destroy(&b);
+    image_destroy(&heat);
+}
+
+/* A 4x3 pair with three differing pixels, sums worked out by hand:
+ *   (1,0): R+2            channel diffs 2, 0, 0
+ *   (3,1): G-5, B+5       channel diffs 0, 5, 5   (first pixel with the maximum 5)
+ *   (0,2): R+5            channel diffs 5, 0, 0   (same maximum, later in row-major order)
+ * Sum |d| = 17, sum d^2 = 4 + 25 + 25 + 25 = 79, over 12 pixels * 3 channels = 36 samples. */
+static void make_known_pair(image *a, image *b)
+{
+    assert_true(image_create(a, 4, 3));
+    assert_true(image_create(b, 4, 3));
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 4; ++x) {
+            set_pixel(a, x, y, 100 + x, 50 + y, 200, 255);
+            set_pixel(b, x, y, 100 + x, 50 + y, 200, 255);
+        }
+    set_pixel(b, 1, 0, 103, 50, 200, 255);
+    set_pixel(b, 3, 1, 103, 46, 205, 255);
+    set_pixel(b, 0, 2, 105, 52, 200, 17);
+}
+
+static void test_compare_known_differences(void **state)
+{
+    (void)state;
+    image a, b, heat;
+    make_known_pair(&a, &b);
+    image_stats s;
+    assert_true(image_compare(&a, &b, NULL, 2, &s, &heat));
+    assert_int_equal(s.pixels, 12);
+    assert_int_equal(s.max_abs, 5);
+    assert_int_equal(s.max_x, 3);
+    assert_int_equal(s.max_y, 1);
+    ASSERT_NEAR(s.mean_abs, 17.0 / 36.0);
+    ASSERT_NEAR(s.rmse, sqrt(79.0 / 36.0));
+    ASSERT_NEAR(s.psnr, 20.0 * log10(255.0 / sqrt(79.0 / 36.0)));
+    assert_int_equal(s.over, 2); /* tolerance 2: the pixel with diff 2 is within */
+    ASSERT_NEAR(s.frac_over, 2.0 / 12.0);
+
+    /* Heat: black where equal, visible red for small differences, brighter for larger ones. */
+    assert_int_equal(pixel_at(&heat, 0, 0)[0], 0);
+    const unsigned char *small = pixel_at(&heat, 1, 0), *big = pixel_at(&heat, 3, 1);
+    assert_true(small[0] >= 96);
+    assert_true(big[0] + big[1] + big[2] > small[0] + small[1] + small[2]);
+    image_destroy(&heat);
+
+    assert_true(image_compare(&a, &b, NULL, 1, &s, NULL));
+    assert_int_equal(s.over, 3);
+    assert_true(image_compare(&a, &b, NULL, 5, &s, NULL));
+    assert_int_equal(s.over, 0);
+    image_destroy(&a);
+    image_destroy(&b);
+}
+
+static void test_heat_ramp(void **state)
+{
+    (void)state;
+    image a, b, heat;
+    assert_true(image_create(&a, 40, 1));
+    assert_true(image_create(&b, 40, 1));
+    for (int x = 0; x < 40; ++x)
+        set_pixel(&b, x, 0, 0, x, 0, 255);
+    image_stats s;
+    assert_true(image_compare(&a, &b, NULL, 0, &s, &heat));
+    /* Brightness grows with the difference up to the saturation point, then stays. */
+    int prev = 0;
+    for (int x = 1; x < 40; ++x) {
+        const unsigned char *p = pixel_at(&heat, x, 0);
+        int sum = p[0] + p[1] + p[2];
+        assert_true(sum >= prev);
+        prev = sum;
+    }
+    assert_true(pixel_at(&heat, 1, 0)[0] > pixel_at(&heat, 1, 0)[1]); /* diff 1 is red */
+    assert_true(pixel_at(&heat, 32, 0)[1] > 200);                       /* diff 32 is yellow-white */
+    assert_memory_equal(pixel_at(&heat, 32, 0), pixel_at(&heat, 39, 0), 4);
+    image_destroy(&a);
+    image_destroy(&b);
+    image_destroy(&heat);
+}
+
+static void test_compare_with_mask(void **state)
+{
+    (void)state;
+    image a, b, mask, heat;
+    make_known_pair(&a, &b);
+    assert_true(image_create(&mask, 4, 3));
+    for (int i = 0; i < 12; ++i)
+        mask.pixels[4 * i] = 255;
+    mask.pixels[4 * (1 * 4 + 3)] = 0; /* exclude (3,1) */
+    mask.pixels[4 * (2 * 4 + 0) + 1] = 255; /* only red counts: (0,2) stays included */
+    image_stats s;
+    assert_true(image_compare(&a, &b, &mask, 2, &s, &heat));
+    assert_int_equal(s.pixels, 11);
+    assert_int_equal(s.max_abs, 5);
+    assert_int_equal(s.max_x, 0);
+    assert_int_equal(s.max_y, 2);
+    ASSERT_NEAR(s.mean_abs, 7.0 / 33.0);
+    ASSERT_NEAR(s.rmse, sqrt(29.0 / 33.0));
+    assert_int_equal(s.over, 1);
+    const unsigned char *masked = pixel_at(&heat, 3, 1);
+    assert_true(masked[2] > 0 && masked[0] == 0 && masked[1] == 0); /* dark blue */
+
+    /* Masking out every difference leaves identical images. */
+    mask.pixels[4 * (0 * 4 + 1)] = 0;
+    mask.pixels[4 * (2 * 4 + 0)] = 0;
+    image_destroy(&heat);
+    assert_true(image_compare(&a, &b, &mask, 0, &s, NULL));
+    assert_int_equal(s.pixels, 9);
+    assert_int_equal(s.max_abs, 0);
+    assert_true(isinf(s.psnr));
+    image_destroy(&a);
+    image_destroy(&b);
+    image_destroy(&mask);
+}
+
+static void test_compare_size_mismatch(void **state)
+{
+    (void)state;
+    image a, b, mask, heat;
+    assert_true(image_create(&a, 4, 3));
+    assert_true(image_create(&b, 3, 4));
+    image_stats s;
+    assert_false(image_compare(&a, &b, NULL, 1, &s, &heat));
+    assert_null(heat.pixels);
+    assert_true(image_create(&mask, 2, 2));
+    assert_false(image_compare(&a, &a, &mask, 1, &s, NULL));
+    image_destroy(&a);
+    image_destroy(&b);
+    image_destroy(&mask);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_create_rejects_bad_size),
+        cmocka_unit_test(test_round_trip),
+        cmocka_unit_test(test_write_replaces_old_file),
+        cmocka_unit_test(test_load_missing_or_garbage),
+        cmocka_unit_test(test_write_fails_on_directory_target),
+        cmocka_unit_test(test_write_fails_when_parent_is_file),
+        cmocka_unit_test(test_write_failure_keeps_old_file),
+        cmocka_unit_test(test_flip_rows),
+        cmocka_unit_test(test_compare_identical),
+        cmocka_unit_test(test_compare_known_differences),
+        cmocka_unit_test(test_heat_ramp),
+        cmocka_unit_test(test_compare_with_mask),
+        cmocka_unit_test(test_compare_size_mismatch),
+    };
+    return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
+}
