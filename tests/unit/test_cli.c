@@ -1,0 +1,128 @@
+/* test_cli.c - the shared command line: defaults, every option, and the mistakes it refuses. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+#include "light.h"
+
+static const char *const renderers[] = {"deferred", "forward", NULL};
+static const char *const views[] = {"final", "albedo", "normal", NULL};
+static const char *const tonemaps[] = {"none", "reinhard", NULL};
+
+static const cli_desc desc = {
+    .program = "test",
+    .summary = "test program",
+    .renderers = renderers,
+    .views = views,
+    .extras = {{.name = "tonemap", .metavar = "NAME", .help = "tone map", .choices = tonemaps,
+                .default_value = "none"},
+               {.name = "exposure", .metavar = "E", .help = "exposure", .default_value = "1"}},
+};
+
+static int parse(cli_options *o, const char *line)
+{
+    char buf[512], *argv[32];
+    int argc = 0;
+    snprintf(buf, sizeof buf, "test %s", line);
+    for (char *t = strtok(buf, " "); t && argc < 31; t = strtok(NULL, " "))
+        argv[argc++] = t;
+    argv[argc] = NULL;
+    /* stderr noise from refused options is expected here */
+    return cli_parse(argc, argv, &desc, o);
+}
+
+static void test_defaults(void **state)
+{
+    (void)state;
+    cli_options o;
+    assert_int_equal(parse(&o, ""), CLI_EXIT_OK);
+    assert_int_equal(o.width, 800);
+    assert_int_equal(o.height, 600);
+    assert_int_equal(o.frames, 0); /* window: until closed */
+    assert_string_equal(o.renderer, "deferred");
+    assert_string_equal(o.view, "final");
+    assert_int_equal(o.lights, -1);
+    assert_true(o.cutoff == LIGHT_DEFAULT_CUTOFF);
+    assert_false(o.headless);
+    assert_string_equal(cli_extra_value(&desc, &o, "tonemap"), "none");
+    assert_string_equal(cli_extra_value(&desc, &o, "exposure"), "1");
+    assert_int_equal(parse(&o, "--headless"), CLI_EXIT_OK);
+    assert_int_equal(o.frames, 1); /* headless: one frame */
+    assert_int_equal(o.backend, CLI_BACKEND_EGL);
+    assert_int_equal(parse(&o, "--headless --bench"), CLI_EXIT_OK);
+    assert_int_equal(o.frames, 10);
+}
+
+static void test_every_option(void **state)
+{
+    (void)state;
+    cli_options o;
+    assert_int_equal(parse(&o, "--headless=osmesa --size 320x240 --frames 5 --screenshot a.png --scene s.scene "
+                               "--renderer forward --view normal --lights 64 --seed 9 --time 2.5 --cutoff 0 "
+                               "--bench --warmup 2 --gl-debug --paused --tonemap reinhard --exposure=0.5"),
+                     CLI_EXIT_OK);
+    assert_int_equal(o.backend, CLI_BACKEND_OSMESA);
+    assert_int_equal(o.width, 320);
+    assert_int_equal(o.height, 240);
+    assert_int_equal(o.frames, 5);
+    assert_string_equal(o.screenshot, "a.png");
+    assert_string_equal(o.scene_path, "s.scene");
+    assert_string_equal(o.renderer, "forward");
+    assert_string_equal(o.view, "normal");
+    assert_int_equal(o.lights, 64);
+    assert_int_equal(o.seed, 9);
+    assert_float_equal(o.time, 2.5f, 0.0f);
+    assert_true(o.cutoff == 0.0);
+    assert_true(o.bench && o.gl_debug && o.paused);
+    assert_int_equal(o.warmup, 2);
+    assert_string_equal(cli_extra_value(&desc, &o, "tonemap"), "reinhard");
+    assert_string_equal(cli_extra_value(&desc, &o, "exposure"), "0.5");
+    assert_int_equal(parse(&o, "--size=1x1"), CLI_EXIT_OK);
+    assert_int_equal(o.width, 1);
+}
+
+static void test_refused(void **state)
+{
+    (void)state;
+    const char *bad[] = {"--size 0x0",       "--size 100000x100000", "--size 10",        "--size x10",
+                         "--size 10x",       "--size -5x5",          "--frames -1",      "--frames 0",
+                         "--frames 1.5",     "--cutoff -0.1",        "--cutoff nan",     "--cutoff inf",
+                         "--lights -2",      "--lights 1e3",         "--seed -1",        "--time abc",
+                         "--renderer fast",  "--view depth",         "--tonemap filmic", "--headless=vulkan",
+                         "--bogus",          "stray",                "--size",           "--scene"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        cli_options o;
+        int rc = parse(&o, bad[i]);
+        if (rc != CLI_EXIT_USAGE)
+            fail_msg("'%s' was accepted (rc %d)", bad[i], rc);
+    }
+}
+
+static void test_help(void **state)
+{
+    (void)state;
+    cli_options o;
+    FILE *saved = stdout;
+    stdout = fopen("/dev/null", "w");
+    int rc = parse(&o, "--help");
+    fclose(stdout);
+    stdout = saved;
+    assert_int_equal(rc, CLI_EXIT_DONE);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_defaults),
+        cmocka_unit_test(test_every_option),
+        cmocka_unit_test(test_refused),
+        cmocka_unit_test(test_help),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
