@@ -41,6 +41,7 @@ void forward_destroy(forward *f)
 {
     gl_program_destroy(&f->program);
     gl_program_destroy(&f->depth_program);
+    gl_program_destroy(&f->linear_program);
     gl_buffer_destroy(&f->list_buffer);
     gl_texture_destroy(&f->list_texture);
     if (f->query)
@@ -104,11 +105,43 @@ static bool build_light_lists(forward *f, const gpu_scene *gs)
     return true;
 }
 
+/* The linear program is built on first use: only the benchmark asks for it. */
+static bool load_linear_program(forward *f)
+{
+    if (f->linear_program)
+        return true;
+    GLuint p = gl_program_load("forward.vert", "forward.frag", "OUTPUT_LINEAR 1");
+    if (!p)
+        return false;
+    f->linear_program = p;
+    f->linear_loc.object.model = glGetUniformLocation(p, "u_model");
+    f->linear_loc.object.normal_matrix = glGetUniformLocation(p, "u_normal_matrix");
+    f->linear_loc.view_proj = glGetUniformLocation(p, "u_view_proj");
+    f->linear_loc.eye = glGetUniformLocation(p, "u_eye");
+    f->linear_loc.albedo = glGetUniformLocation(p, "u_albedo");
+    f->linear_loc.specular = glGetUniformLocation(p, "u_specular");
+    f->linear_loc.shininess = glGetUniformLocation(p, "u_shininess");
+    f->linear_loc.use_list = glGetUniformLocation(p, "u_use_list");
+    f->linear_loc.light_list = glGetUniformLocation(p, "u_light_list");
+    f->linear_loc.list_offset = glGetUniformLocation(p, "u_list_offset");
+    f->linear_loc.list_count = glGetUniformLocation(p, "u_list_count");
+    return true;
+}
+
 bool forward_render(forward *f, const gpu_scene *gs, forward_options options)
 {
     const scene *s = gs->src;
     if (options.light_lists && !build_light_lists(f, gs))
         return false;
+    if (options.linear_output && !load_linear_program(f))
+        return false;
+    GLuint program = f->program;
+    forward_locations loc = {
+        .object = f->loc.object, .view_proj = f->loc.view_proj, .eye = f->loc.eye, .albedo = f->loc.albedo,
+        .specular = f->loc.specular, .shininess = f->loc.shininess, .use_list = f->loc.use_list,
+        .light_list = f->loc.light_list, .list_offset = f->loc.list_offset, .list_count = f->loc.list_count};
+    if (options.linear_output)
+        program = f->linear_program, loc = f->linear_loc;
 
     glViewport(0, 0, gs->view.width, gs->view.height);
     glClearColor(0, 0, 0, 1);
@@ -133,27 +166,27 @@ bool forward_render(forward *f, const gpu_scene *gs, forward_options options)
         glDepthFunc(GL_LESS);
     }
 
-    glUseProgram(f->program);
-    gpu_scene_bind_lights(gs, f->program, 0);
+    glUseProgram(program);
+    gpu_scene_bind_lights(gs, program, 0);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_BUFFER, f->list_texture);
-    glUniform1i(f->loc.light_list, 1);
+    glUniform1i(loc.light_list, 1);
     glActiveTexture(GL_TEXTURE0);
-    glUniformMatrix4fv(f->loc.view_proj, 1, GL_FALSE, (const float *)gs->view.view_proj);
-    glUniform3fv(f->loc.eye, 1, gs->view.eye);
-    glUniform1i(f->loc.use_list, options.light_lists);
+    glUniformMatrix4fv(loc.view_proj, 1, GL_FALSE, (const float *)gs->view.view_proj);
+    glUniform3fv(loc.eye, 1, gs->view.eye);
+    glUniform1i(loc.use_list, options.light_lists);
     if (options.count_pixels)
         glBeginQuery(GL_SAMPLES_PASSED, f->query);
     for (int i = 0; i < s->object_count; i++) {
         if (options.light_lists) {
-            glUniform1i(f->loc.list_offset, f->offsets[i]);
-            glUniform1i(f->loc.list_count, f->counts[i]);
+            glUniform1i(loc.list_offset, f->offsets[i]);
+            glUniform1i(loc.list_count, f->counts[i]);
         }
         const scene_material *m = &s->materials[s->objects[i].material];
-        glUniform3fv(f->loc.albedo, 1, m->albedo);
-        glUniform1f(f->loc.specular, m->specular);
-        glUniform1f(f->loc.shininess, m->shininess);
-        gpu_scene_draw_object(gs, i, f->loc.object);
+        glUniform3fv(loc.albedo, 1, m->albedo);
+        glUniform1f(loc.specular, m->specular);
+        glUniform1f(loc.shininess, m->shininess);
+        gpu_scene_draw_object(gs, i, loc.object);
     }
     if (options.count_pixels) {
         glEndQuery(GL_SAMPLES_PASSED);

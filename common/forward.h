@@ -9,6 +9,9 @@
  * Options are the honest optimisations a forward renderer turns on:
  *   prepass      depth-only pass first, then shade with GL_EQUAL: each pixel shaded once
  *   light_lists  per object, only the lights whose sphere reaches the object's bounding sphere
+ * and one that changes the output, not the speed:
+ *   linear_output  write linear radiance, unclamped and not display-encoded, for a float target
+ *                  (the benchmark's HDR error); a second program built with OUTPUT_LINEAR
  */
 #ifndef COMMON_FORWARD_H
 #define COMMON_FORWARD_H
@@ -19,10 +22,17 @@ typedef struct forward_options {
     bool prepass;
     bool light_lists;
     bool count_pixels;
+    bool linear_output;
 } forward_options;
 
+/* Uniform locations of one shading program (the display-encoded one or the linear one). */
+typedef struct forward_locations {
+    gpu_object_uniforms object;
+    GLint view_proj, eye, albedo, specular, shininess, use_list, light_list, list_offset, list_count;
+} forward_locations;
+
 typedef struct forward {
-    GLuint program, depth_program;
+    GLuint program, depth_program, linear_program;
     GLuint list_buffer, list_texture;
     GLuint query;
     int *list;      /* light indices, object after object */
@@ -37,6 +47,7 @@ typedef struct forward {
         GLint view_proj, depth_view_proj, eye, albedo, specular, shininess, use_list, light_list, list_offset,
             list_count;
     } loc;
+    forward_locations linear_loc;
 } forward;
 
 bool forward_create(forward *f);

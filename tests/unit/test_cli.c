@@ -27,7 +27,8 @@ static const cli_desc desc = {
 
 static int parse(cli_options *o, const char *line)
 {
-    char buf[512], *argv[32];
+    static char buf[512]; /* cli_options points into argv: keep it alive after parse() */
+    char *argv[32];
     int argc = 0;
     snprintf(buf, sizeof buf, "test %s", line);
     for (char *t = strtok(buf, " "); t && argc < 31; t = strtok(NULL, " "))
