@@ -1,0 +1,130 @@
+/* 01_fbo_setup.c - render into a framebuffer object you made yourself, then show it.
+ *
+ * Deferred shading draws its first pass into textures, not to the screen; this chapter is that
+ * first step on its own. The FBO here has a colour texture (it will be read back later, so a
+ * texture) and a depth renderbuffer (only the depth test reads it, so no texture needed). The
+ * scene is chapter 00's forward renderer drawn into it; a full-screen triangle then copies the
+ * colour texture into the window. The picture must be chapter 00's, pixel for pixel (key R
+ * switches to drawing it directly). common/fbo.c is the same code, promoted for later chapters.
+ * Read docs/01_fbo_setup.md alongside.
+ */
+#include "app.h"
+#include "gl_util.h"
+#include "log.h"
+
+static const char *const renderers[] = {"offscreen", "forward", NULL};
+
+static struct {
+    GLuint fbo, color, depth; /* framebuffer, its colour texture, its depth renderbuffer */
+    int width, height;
+    GLuint present_program;
+} state;
+
+static void offscreen_destroy(void)
+{
+    gl_framebuffer_destroy(&state.fbo);
+    gl_texture_destroy(&state.color);
+    if (state.depth)
+        glDeleteRenderbuffers(1, &state.depth);
+    state.depth = 0;
+}
+
+static bool offscreen_create(int width, int height)
+{
+    offscreen_destroy();
+    state.width = width, state.height = height;
+
+    /* 1. the colour texture: storage only (data NULL); NEAREST because it is read texel for pixel,
+     *    and a texture without mipmaps must not use a mipmap filter or it is "incomplete" */
+    state.color = gl_texture_create();
+    glBindTexture(GL_TEXTURE_2D, state.color);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+
+    /* 2. the depth buffer: a renderbuffer, because nothing samples it afterwards */
+    glGenRenderbuffers(1, &state.depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, state.depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+
+    /* 3. the framebuffer ties them together; drawing goes to colour attachment 0 */
+    state.fbo = gl_framebuffer_create();
+    glBindFramebuffer(GL_FRAMEBUFFER, state.fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, state.color, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, state.depth);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+
+    /* 4. ask the driver whether it can render into this combination, and say what it answered */
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        log_error("offscreen framebuffer %dx%d: %s", width, height, fbo_status_name(status));
+        return false;
+    }
+    log_info("offscreen framebuffer %dx%d (RGBA8 texture + DEPTH_COMPONENT32F renderbuffer): %s", width,
+             height, fbo_status_name(status));
+    return gl_check("offscreen_create");
+}
+
+static bool init(app *a)
+{
+    state.present_program = gl_program_load("fullscreen.vert", "present.frag", NULL);
+    return state.present_program && offscreen_create(a->width, a->height);
+}
+
+/* The window changed size: the old textures are the wrong size, make new ones. */
+static bool resize(app *a) { return offscreen_create(a->width, a->height); }
+
+static bool frame(app *a)
+{
+    if (app_renderer_is(a, "forward"))
+        return app_render_forward(a);
+
+    /* 1. draw the scene into our framebuffer instead of the target */
+    glBindFramebuffer(GL_FRAMEBUFFER, state.fbo);
+    if (!forward_render(&a->fwd, &a->gs, app_forward_options("forward")))
+        return false;
+
+    /* 2. present: bind the colour texture and cover the target with one triangle */
+    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
+    glViewport(0, 0, a->width, a->height);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(state.present_program);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, state.color);
+    glUniform1i(glGetUniformLocation(state.present_program, "u_image"), 0);
+    gl_draw_fullscreen();
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return gl_check("present");
+}
+
+static void cleanup(app *a)
+{
+    (void)a;
+    offscreen_destroy();
+    gl_program_destroy(&state.present_program);
+}
+
+int main(int argc, char **argv)
+{
+    const app_desc desc = {
+        .cli =
+            {
+                .program = "01_fbo_setup",
+                .summary = "Chapter 01: render into an offscreen framebuffer, then present it.",
+                .renderers = renderers,
+                .keys = "  R        switch offscreen / forward (straight into the target)\n"
+                        "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
+                        "  Space    pause the animation\n"
+                        "  P        save a screenshot into out/\n"
+                        "  Esc, Q   quit\n",
+            },
+        .init = init,
+        .resize = resize,
+        .frame = frame,
+        .cleanup = cleanup,
+    };
+    return app_run(&desc, argc, argv);
+}

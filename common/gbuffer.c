@@ -1,0 +1,113 @@
+/* gbuffer.c - see gbuffer.h. */
+#include "gbuffer.h"
+
+#include "gl_util.h"
+#include "log.h"
+
+#include <string.h>
+
+static bool make_targets(gbuffer *g, int width, int height)
+{
+    const fbo_desc desc = {
+        .color_formats = {GL_SRGB8_ALPHA8, GL_RGBA16F},
+        .color_count = 2,
+        .depth_format = GL_DEPTH_COMPONENT32F,
+        .name = "gbuffer",
+    };
+    return fbo_create(&g->fbo, &desc, width, height);
+}
+
+bool gbuffer_create(gbuffer *g, int width, int height)
+{
+    memset(g, 0, sizeof *g);
+    /* forward.vert: the same vertex path as the forward renderer, so both rasterise identically. */
+    g->program = gl_program_load("forward.vert", "gbuffer.frag", NULL);
+    if (!g->program || !make_targets(g, width, height)) {
+        gbuffer_destroy(g);
+        return false;
+    }
+    GLuint p = g->program;
+    g->loc.object.model = glGetUniformLocation(p, "u_model");
+    g->loc.object.normal_matrix = glGetUniformLocation(p, "u_normal_matrix");
+    g->loc.view_proj = glGetUniformLocation(p, "u_view_proj");
+    g->loc.albedo = glGetUniformLocation(p, "u_albedo");
+    g->loc.specular = glGetUniformLocation(p, "u_specular");
+    g->loc.shininess = glGetUniformLocation(p, "u_shininess");
+    return gl_check("gbuffer_create");
+}
+
+bool gbuffer_resize(gbuffer *g, int width, int height)
+{
+    fbo_destroy(&g->fbo);
+    return make_targets(g, width, height);
+}
+
+void gbuffer_destroy(gbuffer *g)
+{
+    fbo_destroy(&g->fbo);
+    gl_program_destroy(&g->program);
+    memset(g, 0, sizeof *g);
+}
+
+bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
+{
+    const scene *s = gs->src;
+    if (g->fbo.width != gs->view.width || g->fbo.height != gs->view.height) {
+        log_error("gbuffer is %dx%d but the view is %dx%d (call gbuffer_resize)", g->fbo.width, g->fbo.height,
+                  gs->view.width, gs->view.height);
+        return false;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, g->fbo.id);
+    glViewport(0, 0, g->fbo.width, g->fbo.height);
+    /* Zero normal/material and depth 1 mark the background; the lighting pass tests depth. */
+    glClearColor(0, 0, 0, 0);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    /* Same state as forward_render: an object hides another exactly where it does there. */
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glDisable(GL_BLEND);
+    /* Without this an SRGB8 attachment stores the linear value unconverted (and reads decode it). */
+    glEnable(GL_FRAMEBUFFER_SRGB);
+
+    glUseProgram(g->program);
+    glUniformMatrix4fv(g->loc.view_proj, 1, GL_FALSE, (const float *)gs->view.view_proj);
+    for (int i = 0; i < s->object_count; i++) {
+        const scene_material *m = &s->materials[s->objects[i].material];
+        glUniform3fv(g->loc.albedo, 1, m->albedo);
+        glUniform1f(g->loc.specular, m->specular);
+        glUniform1f(g->loc.shininess, m->shininess);
+        gpu_scene_draw_object(gs, i, g->loc.object);
+    }
+
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return true;
+}
+
+void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program, int first_unit)
+{
+    static const char *const names[3] = {"u_gbuffer_albedo", "u_gbuffer_normal", "u_gbuffer_depth"};
+    const GLuint textures[3] = {g->fbo.color[0], g->fbo.color[1], g->fbo.depth};
+    glUseProgram(program);
+    for (int i = 0; i < 3; i++) {
+        glActiveTexture(GL_TEXTURE0 + (GLenum)(first_unit + i));
+        glBindTexture(GL_TEXTURE_2D, textures[i]);
+        glUniform1i(glGetUniformLocation(program, names[i]), first_unit + i);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glUniformMatrix4fv(glGetUniformLocation(program, "u_inv_view_proj"), 1, GL_FALSE,
+                       (const float *)gs->view.inv_view_proj);
+    glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);
+    glUniform2f(glGetUniformLocation(program, "u_viewport_size"), (float)g->fbo.width, (float)g->fbo.height);
+}
+
+int gbuffer_bytes_per_pixel(void)
+{
+    return 4 /* SRGB8_ALPHA8 */ + 8 /* RGBA16F */ + 4 /* DEPTH_COMPONENT32F */;
+}

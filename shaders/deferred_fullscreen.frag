@@ -1,0 +1,21 @@
+#version 330 core
+// deferred_fullscreen.frag - the lighting pass: one full-screen triangle, every pixel reads its
+// surface from the G-buffer and loops over all lights with the same shade_light() as forward.frag.
+#include "shading.glsl"
+#include "gbuffer_read.glsl"
+
+out vec4 o_color;
+
+void main()
+{
+    surface s = gbuffer_read(ivec2(gl_FragCoord.xy));
+    // Nothing drawn here: keep the cleared black, and do not count the pixel as shaded.
+    if (s.background)
+        discard;
+    vec3 n = s.normal;
+    vec3 v = safe_normalize(u_eye - s.position, n);
+    vec3 c = shade_ambient(s.albedo);
+    for (int i = 0; i < u_light_count; i++)
+        c += shade_light(light_fetch(i), s.position, n, v, s.albedo, s.specular, s.shininess);
+    o_color = vec4(display_encode(c), 1.0);
+}
