@@ -1,0 +1,20 @@
+#version 330 core
+// accum_present.frag - the summed linear radiance to display values, once per pixel: optional
+// tone mapping, then the same display_encode() the forward renderer applies.
+#include "shading.glsl"
+
+uniform sampler2D u_accum;
+uniform int u_tonemap;    // 0 none (clamp), 1 exposure, 2 Reinhard (light_volumes_tonemap)
+uniform float u_exposure;
+
+out vec4 o_color;
+
+void main()
+{
+    vec3 c = texelFetch(u_accum, ivec2(gl_FragCoord.xy), 0).rgb;
+    if (u_tonemap >= 1)
+        c *= u_exposure;
+    if (u_tonemap == 2)
+        c = c / (1.0 + c);
+    o_color = vec4(display_encode(c), 1.0);
+}

@@ -1,0 +1,51 @@
+#version 330 core
+// light_volume.frag - one light at one pixel: read the surface from the G-buffer and call
+// shade_light() with exactly the arguments forward.frag gives it.
+// Compiled twice: with OVERWRITE (chapter 04: no blending, so this fragment replaces the pixel and
+// carries the ambient term too) and without (additive blending). Only OVERWRITE discards: a shader
+// without discard lets llvmpipe run the depth test before the shader.
+#include "shading.glsl"
+#include "gbuffer_read.glsl"
+
+flat in vec3 v_light_position;
+flat in float v_light_radius;
+flat in vec3 v_light_radiance;
+flat in vec3 v_light_attenuation;
+flat in float v_volume_radius;
+
+uniform int u_view; // 0 lit, 1 lit + cut-off ring, 2 overdraw (light_volumes_view)
+
+out vec4 o_color;
+
+void main()
+{
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // Depth alone says whether the surface is inside the sphere: the rest of the G-buffer is only
+    // read for pixels the light reaches.
+    float depth = texelFetch(u_gbuffer_depth, pixel, 0).r;
+    float d = length(v_light_position - gbuffer_position(pixel, depth));
+    float ring_width = 1.5 * fwidth(d); // derivatives while every fragment is still running
+    if (u_view == 2) {
+        o_color = vec4(vec3(depth < 1.0 ? 1.0 / 16.0 : 0.0), 1.0);
+        return;
+    }
+    if (depth >= 1.0 || d > v_volume_radius) {
+#ifdef OVERWRITE
+        discard;
+#else
+        o_color = vec4(0.0);
+        return;
+#endif
+    }
+    surface s = gbuffer_read(pixel);
+    light_data L = light_data(v_light_position, v_light_radius, v_light_radiance, v_light_attenuation);
+    vec3 n = s.normal;
+    vec3 v = safe_normalize(u_eye - s.position, n);
+    vec3 c = shade_light(L, s.position, n, v, s.albedo, s.specular, s.shininess);
+#ifdef OVERWRITE
+    c += shade_ambient(s.albedo);
+#endif
+    if (u_view == 1 && v_volume_radius - d < ring_width)
+        c += L.radiance / max(max(L.radiance.r, L.radiance.g), max(L.radiance.b, 1e-6));
+    o_color = vec4(c, 1.0);
+}

@@ -1,0 +1,37 @@
+#version 330 core
+// light_volume.vert - one instance per light: the icosphere moved to the light and scaled so it
+// contains the light's sphere of influence, or (u_fullscreen) a triangle covering the viewport for
+// a light that reaches everything. The light's data goes to the fragments as flat values, fetched
+// once per vertex instead of once per pixel.
+#include "shading.glsl"
+
+layout(location = 0) in vec3 a_position;
+
+uniform mat4 u_view_proj;
+uniform isamplerBuffer u_light_index; // instance -> light, finite volumes first
+uniform int u_first_instance;
+uniform float u_mesh_scale;   // 1 / inradius: the inscribed mesh grown to contain the unit sphere
+uniform float u_fixed_radius; // > 0: every volume this size instead of the solved radius
+uniform bool u_fullscreen;
+
+flat out vec3 v_light_position;
+flat out float v_light_radius;  // where shade_light() stops (the solved radius)
+flat out vec3 v_light_radiance;
+flat out vec3 v_light_attenuation;
+flat out float v_volume_radius; // where the volume stops (the solved or the fixed radius)
+
+void main()
+{
+    light_data L = light_fetch(texelFetch(u_light_index, u_first_instance + gl_InstanceID).r);
+    v_light_position = L.position;
+    v_light_radius = L.radius;
+    v_light_radiance = L.radiance;
+    v_light_attenuation = L.attenuation;
+    v_volume_radius = u_fixed_radius > 0.0 ? u_fixed_radius : L.radius;
+    if (u_fullscreen) {
+        vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+        gl_Position = vec4(2.0 * p - 1.0, 0.0, 1.0);
+    } else {
+        gl_Position = u_view_proj * vec4(L.position + a_position * (v_volume_radius * u_mesh_scale), 1.0);
+    }
+}
