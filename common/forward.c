@@ -136,10 +136,16 @@ bool forward_render(forward *f, const gpu_scene *gs, forward_options options)
     if (options.linear_output && !load_linear_program(f))
         return false;
     GLuint program = f->program;
-    forward_locations loc = {
-        .object = f->loc.object, .view_proj = f->loc.view_proj, .eye = f->loc.eye, .albedo = f->loc.albedo,
-        .specular = f->loc.specular, .shininess = f->loc.shininess, .use_list = f->loc.use_list,
-        .light_list = f->loc.light_list, .list_offset = f->loc.list_offset, .list_count = f->loc.list_count};
+    forward_locations loc = {.object = f->loc.object,
+                             .view_proj = f->loc.view_proj,
+                             .eye = f->loc.eye,
+                             .albedo = f->loc.albedo,
+                             .specular = f->loc.specular,
+                             .shininess = f->loc.shininess,
+                             .use_list = f->loc.use_list,
+                             .light_list = f->loc.light_list,
+                             .list_offset = f->loc.list_offset,
+                             .list_count = f->loc.list_count};
     if (options.linear_output)
         program = f->linear_program, loc = f->linear_loc;
 

@@ -1,0 +1,10 @@
+# The forward-vs-deferred benchmark (tools/bench.c, docs/08_compare.md).
+# Its helpers live in tools/bench/ so the tools/*.c glob does not make them separate programs.
+target_sources(bench PRIVATE ${CMAKE_SOURCE_DIR}/tools/bench/bench_work.c)
+
+# --quick runs a small sweep; the check is on the output's shape (columns, rows, finite numbers,
+# files), never on timings, which depend on the machine.
+add_test(NAME bench.quick
+  COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_bench_quick.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-quick
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(bench.quick PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 60)

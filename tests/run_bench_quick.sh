@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# run_bench_quick.sh BENCH OUT_DIR - run `bench --quick` and check the shape of what it wrote:
+# the files exist, the CSV has its header and one row per (case, renderer), every numeric cell is a
+# finite number or NA, and measured rows have positive times. Timings themselves are never checked.
+# Exit 77 (no GL context) passes through as a skip.
+set -u
+bench=$1
+out=$2
+rm -rf "$out"
+"$bench" --quick --out "$out" >"$out.stdout" 2>"$out.stderr"
+rc=$?
+if [ "$rc" -eq 77 ]; then
+    echo "skip: no GL context"
+    exit 77
+fi
+if [ "$rc" -ne 0 ]; then
+    echo "FAIL: bench --quick exited $rc"; cat "$out.stderr"; exit 1
+fi
+
+fail=0
+for f in bench.csv bench.md time_vs_lights.png speed_vs_error.png; do
+    if [ ! -s "$out/$f" ]; then echo "FAIL: $out/$f missing or empty"; fail=1; fi
+done
+# Atomic writes leave no temporary files behind.
+if ls "$out"/*.tmp >/dev/null 2>&1; then echo "FAIL: temporary files left in $out"; fail=1; fi
+for f in time_vs_lights.png speed_vs_error.png; do
+    if [ -s "$out/$f" ] && [ "$(head -c 4 "$out/$f" | tail -c 3)" != "PNG" ]; then
+        echo "FAIL: $out/$f is not a PNG"; fail=1
+    fi
+done
+[ "$fail" -eq 0 ] || exit 1
+
+# The CSV: the stable header, then (3 light counts x R renderers) + (3 cut-offs x (R - 1)) rows, the
+# naive forward renderer being left out of the cut-off sweep (--quick: 1,16,64 lights; 2,5,16/256).
+awk -F, '
+NR == 1 {
+    want = "sweep,scene,renderer,light_set,lights,active_lights,cutoff_256,width,height,frames,warmup," \
+           "median_ms,min_ms,max_ms,fps,status,shaded_pixels,covered_pixels,ideal_pairs,light_evals," \
+           "work_ratio,gbuffer_bytes,gbuffer_naive_bytes,max_abs_8bit,mean_abs_8bit,psnr_8bit,max_abs_hdr," \
+           "mean_abs_hdr,psnr_hdr,note"
+    if ($0 != want) { print "FAIL: header is\n  " $0 "\nwanted\n  " want; bad = 1 }
+    ncol = NF; next
+}
+{
+    rows++
+    if (NF != ncol) { printf "FAIL: row %d has %d fields, header %d\n", NR, NF, ncol; bad = 1 }
+    if ($1 == "lights") lights_rows++; else if ($1 == "cutoff") cutoff_rows++;
+    else { printf "FAIL: row %d: sweep %s\n", NR, $1; bad = 1 }
+    renderers[$3] = 1
+    # numeric columns 5..15 and 17..29: a finite number or NA
+    for (i = 5; i <= 29; i++) {
+        if (i == 16) continue
+        if ($i == "NA") continue
+        if ($i !~ /^-?[0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?$/) {
+            printf "FAIL: row %d column %d is \"%s\", not a finite number\n", NR, i, $i; bad = 1
+        }
+    }
+    if ($16 != "measured" && $16 != "few_frames" && $16 != "skipped") {
+        printf "FAIL: row %d status \"%s\"\n", NR, $16; bad = 1
+    }
+    if ($16 == "measured" && !($12 > 0 && $13 > 0 && $14 >= $13 && $12 >= $13 && $12 <= $14)) {
+        printf "FAIL: row %d times not ordered min <= median <= max > 0: %s %s %s\n", NR, $13, $12, $14; bad = 1
+    }
+    if ($16 == "measured" && $17 == "NA") { printf "FAIL: row %d has no shaded pixel count\n", NR; bad = 1 }
+    # the ideal count never exceeds covered pixels x active lights, and every renderer shades a pixel at least
+    # as often as the ideal count needs only when lights are few (1 light: evaluations >= 0.9 x ideal)
+    if ($19 != "NA" && $18 != "NA" && $19 > $18 * $6) { printf "FAIL: row %d ideal > covered x lights\n", NR; bad = 1 }
+    if ($5 == 1 && $20 != "NA" && $20 < 0.9 * $19) { printf "FAIL: row %d evaluations %s << ideal %s\n", NR, $20, $19; bad = 1 }
+    if ($26 != "NA" && ($26 < 0 || $26 > 100)) { printf "FAIL: row %d PSNR %s\n", NR, $26; bad = 1 }
+}
+END {
+    r = 0; for (k in renderers) r++
+    if (r < 3) { printf "FAIL: only %d renderers\n", r; bad = 1 }
+    if (lights_rows != 3 * r) { printf "FAIL: %d light-sweep rows, want %d\n", lights_rows, 3 * r; bad = 1 }
+    if (cutoff_rows != 3 * (r - 1)) { printf "FAIL: %d cut-off rows, want %d\n", cutoff_rows, 3 * (r - 1); bad = 1 }
+    if (!bad) printf "ok: %d rows, %d renderers\n", rows, r
+    exit bad
+}' "$out/bench.csv" || exit 1
+
+# The report has its sections.
+for section in "## Targets" "## Crossover" "## Median ms per frame" "## Lighting work" "## Error against" \
+               "## Speed against error"; do
+    grep -q "^$section" "$out/bench.md" || { echo "FAIL: bench.md lacks '$section'"; exit 1; }
+done
+# Bad options: exit 2 with one line.
+"$bench" --no-such-option >/dev/null 2>"$out.err"; rc=$?
+if [ "$rc" -ne 2 ] || [ "$(wc -l <"$out.err")" -ne 1 ]; then
+    echo "FAIL: a bad option gave exit $rc and $(wc -l <"$out.err") line(s) on stderr"; exit 1
+fi
+"$bench" --lights 1,x >/dev/null 2>&1; rc=$?
+[ "$rc" -eq 2 ] || { echo "FAIL: --lights 1,x gave exit $rc"; exit 1; }
+echo "ok: bench --quick output has the expected shape"

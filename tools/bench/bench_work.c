@@ -1,0 +1,164 @@
+/* bench_work.c - see bench_work.h. */
+#include "bench_work.h"
+
+#include <float.h>
+#include <math.h>
+
+/* Inverse of a column-major 4x4 matrix by cofactors, in double: the float inverse that the
+ * shaders use would put its own error into the "exact" count. */
+static bool invert_4x4(const double m[16], double out[16])
+{
+    double inv[16];
+    inv[0] = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] - m[9] * m[6] * m[15] + m[9] * m[7] * m[14] +
+             m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
+    inv[4] = -m[4] * m[10] * m[15] + m[4] * m[11] * m[14] + m[8] * m[6] * m[15] - m[8] * m[7] * m[14] -
+             m[12] * m[6] * m[11] + m[12] * m[7] * m[10];
+    inv[8] = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] - m[8] * m[5] * m[15] + m[8] * m[7] * m[13] +
+             m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
+    inv[12] = -m[4] * m[9] * m[14] + m[4] * m[10] * m[13] + m[8] * m[5] * m[14] - m[8] * m[6] * m[13] -
+              m[12] * m[5] * m[10] + m[12] * m[6] * m[9];
+    inv[1] = -m[1] * m[10] * m[15] + m[1] * m[11] * m[14] + m[9] * m[2] * m[15] - m[9] * m[3] * m[14] -
+             m[13] * m[2] * m[11] + m[13] * m[3] * m[10];
+    inv[5] = m[0] * m[10] * m[15] - m[0] * m[11] * m[14] - m[8] * m[2] * m[15] + m[8] * m[3] * m[14] +
+             m[12] * m[2] * m[11] - m[12] * m[3] * m[10];
+    inv[9] = -m[0] * m[9] * m[15] + m[0] * m[11] * m[13] + m[8] * m[1] * m[15] - m[8] * m[3] * m[13] -
+             m[12] * m[1] * m[11] + m[12] * m[3] * m[9];
+    inv[13] = m[0] * m[9] * m[14] - m[0] * m[10] * m[13] - m[8] * m[1] * m[14] + m[8] * m[2] * m[13] +
+              m[12] * m[1] * m[10] - m[12] * m[2] * m[9];
+    inv[2] = m[1] * m[6] * m[15] - m[1] * m[7] * m[14] - m[5] * m[2] * m[15] + m[5] * m[3] * m[14] +
+             m[13] * m[2] * m[7] - m[13] * m[3] * m[6];
+    inv[6] = -m[0] * m[6] * m[15] + m[0] * m[7] * m[14] + m[4] * m[2] * m[15] - m[4] * m[3] * m[14] -
+             m[12] * m[2] * m[7] + m[12] * m[3] * m[6];
+    inv[10] = m[0] * m[5] * m[15] - m[0] * m[7] * m[13] - m[4] * m[1] * m[15] + m[4] * m[3] * m[13] +
+              m[12] * m[1] * m[7] - m[12] * m[3] * m[5];
+    inv[14] = -m[0] * m[5] * m[14] + m[0] * m[6] * m[13] + m[4] * m[1] * m[14] - m[4] * m[2] * m[13] -
+              m[12] * m[1] * m[6] + m[12] * m[2] * m[5];
+    inv[3] = -m[1] * m[6] * m[11] + m[1] * m[7] * m[10] + m[5] * m[2] * m[11] - m[5] * m[3] * m[10] -
+             m[9] * m[2] * m[7] + m[9] * m[3] * m[6];
+    inv[7] = m[0] * m[6] * m[11] - m[0] * m[7] * m[10] - m[4] * m[2] * m[11] + m[4] * m[3] * m[10] +
+             m[8] * m[2] * m[7] - m[8] * m[3] * m[6];
+    inv[11] = -m[0] * m[5] * m[11] + m[0] * m[7] * m[9] + m[4] * m[1] * m[11] - m[4] * m[3] * m[9] -
+              m[8] * m[1] * m[7] + m[8] * m[3] * m[5];
+    inv[15] = m[0] * m[5] * m[10] - m[0] * m[6] * m[9] - m[4] * m[1] * m[10] + m[4] * m[2] * m[9] +
+              m[8] * m[1] * m[6] - m[8] * m[2] * m[5];
+    double det = m[0] * inv[0] + m[1] * inv[4] + m[2] * inv[8] + m[3] * inv[12];
+    if (det == 0.0)
+        return false;
+    for (int i = 0; i < 16; i++)
+        out[i] = inv[i] / det;
+    return true;
+}
+
+static void to_double(const float *m, double out[16])
+{
+    for (int i = 0; i < 16; i++)
+        out[i] = m[i];
+}
+
+/* out = m * (x, y, z, 1), m column-major. */
+static void transform_point(const double m[16], double x, double y, double z, double out[4])
+{
+    for (int r = 0; r < 4; r++)
+        out[r] = m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r];
+}
+
+void bench_work_positions(const float *depth, int width, int height, const float *view_proj, double *out)
+{
+    double vp[16], inv[16];
+    to_double(view_proj, vp);
+    bool ok = invert_4x4(vp, inv);
+    for (int y = 0; y < height; y++) {
+        for (int x = 0; x < width; x++) {
+            size_t i = (size_t)y * (size_t)width + (size_t)x;
+            double *p = out + 4 * i;
+            p[0] = p[1] = p[2] = p[3] = 0.0;
+            double d = depth[i];
+            if (!ok || d >= 1.0)
+                continue;
+            /* Pixel centre and depth back to NDC, exactly as shaders/gbuffer_read.glsl does. */
+            double ndc[3] = {((double)x + 0.5) / width * 2.0 - 1.0, ((double)y + 0.5) / height * 2.0 - 1.0,
+                             d * 2.0 - 1.0};
+            double w[4];
+            transform_point(inv, ndc[0], ndc[1], ndc[2], w);
+            if (w[3] == 0.0)
+                continue;
+            p[0] = w[0] / w[3], p[1] = w[1] / w[3], p[2] = w[2] / w[3], p[3] = 1.0;
+        }
+    }
+}
+
+/* Pixel rectangle [x0,x1] x [y0,y1] that holds the light's sphere on screen: the projection of
+ * the sphere's bounding box, or the whole screen when part of the box is behind the eye. */
+static void light_screen_rect(const double vp[16], const gpu_light *l, int width, int height, int rect[4])
+{
+    rect[0] = 0, rect[1] = 0, rect[2] = width - 1, rect[3] = height - 1;
+    double r = l->radius;
+    if (!(r < FLT_MAX))
+        return;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int c = 0; c < 8; c++) {
+        double clip[4];
+        transform_point(vp, l->position[0] + (c & 1 ? r : -r), l->position[1] + (c & 2 ? r : -r),
+                        l->position[2] + (c & 4 ? r : -r), clip);
+        if (clip[3] <= 1e-9)
+            return;
+        for (int k = 0; k < 2; k++) {
+            double v = clip[k] / clip[3];
+            lo[k] = fmin(lo[k], v);
+            hi[k] = fmax(hi[k], v);
+        }
+    }
+    /* ndc -> pixel index whose centre is inside, widened by one pixel against rounding. */
+    int size[2] = {width, height};
+    for (int k = 0; k < 2; k++) {
+        double a = (lo[k] + 1.0) * 0.5 * size[k] - 0.5, b = (hi[k] + 1.0) * 0.5 * size[k] - 0.5;
+        double a_clamped = fmax(floor(a) - 1.0, 0.0), b_clamped = fmin(ceil(b) + 1.0, size[k] - 1.0);
+        rect[k] = (int)a_clamped;
+        rect[k + 2] = (int)b_clamped;
+    }
+}
+
+long long bench_work_ideal_pairs(const double *pos, int width, int height, const float *view_proj,
+                                 const gpu_light *lights, int count)
+{
+    double vp[16];
+    to_double(view_proj, vp);
+    long long pairs = 0;
+    for (int k = 0; k < count; k++) {
+        const gpu_light *l = &lights[k];
+        int rect[4];
+        light_screen_rect(vp, l, width, height, rect);
+        bool infinite = !(l->radius < FLT_MAX);
+        double r2 = (double)l->radius * (double)l->radius;
+        for (int y = rect[1]; y <= rect[3]; y++) {
+            const double *p = pos + 4 * ((size_t)y * (size_t)width + (size_t)rect[0]);
+            for (int x = rect[0]; x <= rect[2]; x++, p += 4) {
+                if (p[3] == 0.0)
+                    continue;
+                double dx = p[0] - l->position[0], dy = p[1] - l->position[1], dz = p[2] - l->position[2];
+                if (infinite || dx * dx + dy * dy + dz * dz <= r2)
+                    pairs++;
+            }
+        }
+    }
+    return pairs;
+}
+
+void bench_work_hdr_error(const float *a, const float *b, int width, int height, bench_error *out)
+{
+    size_t n = (size_t)width * (size_t)height;
+    double max_abs = 0.0, sum = 0.0, sum2 = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        for (int c = 0; c < 3; c++) {
+            double d = fabs((double)a[4 * i + c] - (double)b[4 * i + c]);
+            max_abs = fmax(max_abs, d);
+            sum += d;
+            sum2 += d * d;
+        }
+    }
+    double values = n ? 3.0 * (double)n : 1.0;
+    out->max_abs = max_abs;
+    out->mean_abs = sum / values;
+    double mse = sum2 / values;
+    out->psnr = mse > 0.0 ? fmin(10.0 * log10(1.0 / mse), BENCH_PSNR_CAP) : BENCH_PSNR_CAP;
+}
