@@ -144,6 +144,20 @@ static void update_title(const app *a, double ms)
     platform_set_title(title);
 }
 
+/* --resize-cycle N: frame 0 at the base size, frames 1..N each at another size, frame N+1 back at
+ * the base size. Consecutive sizes differ, so every one of those frames recreates the targets. */
+static void resize_cycle_size(int base_w, int base_h, long frame, long cycle, int *w, int *h)
+{
+    static const int scale[3][2] = {{2, 2}, {3, 4}, {4, 3}}; /* quarters of the base size */
+    if (frame > cycle) {
+        *w = base_w, *h = base_h;
+        return;
+    }
+    const int *s = scale[(frame - 1) % 3];
+    *w = base_w * s[0] / 4 > 0 ? base_w * s[0] / 4 : 1;
+    *h = base_h * s[1] / 4 > 0 ? base_h * s[1] / 4 : 1;
+}
+
 /* Keys every chapter shares; returns false to quit. */
 static bool handle_key(app *a, const app_desc *desc, int key, bool *paused)
 {
@@ -242,11 +256,21 @@ int app_run(const app_desc *desc, int argc, char **argv)
     double last_clock = platform_time(), title_clock = 0.0, ms_sum = 0.0;
     int ms_n = 0;
     long total = (long)opt.frames + (opt.bench ? opt.warmup : 0);
+    long cycle_end = opt.resize_cycle > 0 ? opt.resize_cycle + 1 : 0, live_before = 0;
+    int base_w = a.width, base_h = a.height;
+    if (total > 0)
+        total += cycle_end;
     while (running) {
         platform_poll();
         if (platform_should_close())
             break;
         int w = a.width, h = a.height;
+        if (a.frame_index >= 1 && a.frame_index <= cycle_end) {
+            if (a.frame_index == 1) /* after one frame: lazily made objects exist by now */
+                live_before = gl_live_objects(), base_w = a.width, base_h = a.height;
+            resize_cycle_size(base_w, base_h, a.frame_index, opt.resize_cycle, &w, &h);
+            platform_set_window_size(w, h);
+        }
         if (platform_is_windowed())
             platform_framebuffer_size(&w, &h);
         if (w != a.width || h != a.height) {
@@ -299,6 +323,11 @@ int app_run(const app_desc *desc, int argc, char **argv)
         }
         if (last)
             break;
+    }
+    if (rc == CLI_EXIT_OK && cycle_end > 0 && a.frame_index > cycle_end && gl_live_objects() != live_before) {
+        log_error("--resize-cycle: %ld live GL objects before %d resizes, %ld after", live_before,
+                  opt.resize_cycle, gl_live_objects());
+        rc = CLI_EXIT_RUNTIME;
     }
     if (rc == CLI_EXIT_OK && opt.bench && a.frame_index == total)
         print_bench(&a, times, opt.frames);

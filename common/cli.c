@@ -76,6 +76,8 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --bench                  time frames (glFinish + monotonic clock) and print a 'bench:' line\n"
             "  --warmup N               untimed frames before --bench timing (default 3)\n"
             "  --gl-debug               report GL debug messages; any GL error fails the run\n"
+            "  --resize-cycle N         after the first frame, resize N times and back; fail if GL\n"
+            "                           objects leaked (window: resizes the window)\n"
             "  --verbose                more log lines\n",
             LIGHT_DEFAULT_CUTOFF);
     if (desc->keys)
@@ -237,6 +239,10 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
             if (!(v = option_value(argc, argv, &i, "--time")) || !parse_double(v, -1e6, 1e6, &t))
                 return usage_error(desc, "bad --time '%s': expected seconds", v ? v : "");
             out->time = (float)t;
+        } else if (is_option(a, "--resize-cycle")) {
+            if (!(v = option_value(argc, argv, &i, "--resize-cycle")) ||
+                !parse_int(v, 0, 100000, &out->resize_cycle))
+                return usage_error(desc, "bad --resize-cycle '%s': expected 0..100000", v ? v : "");
         } else if (is_option(a, "--cutoff")) {
             if (!(v = option_value(argc, argv, &i, "--cutoff")) || !parse_double(v, 0.0, 1e6, &out->cutoff))
                 return usage_error(desc, "bad --cutoff '%s': expected a number >= 0", v ? v : "");
@@ -265,5 +271,8 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
     }
     if (out->frames < 0)
         out->frames = out->bench ? 10 : out->headless ? 1 : 0;
+    if (out->resize_cycle > 0 && out->bench)
+        return usage_error(desc, "%s changes the size between timed frames: not with --bench",
+                           "--resize-cycle");
     return CLI_EXIT_OK;
 }

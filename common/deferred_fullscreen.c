@@ -12,15 +12,14 @@ bool deferred_fullscreen_create(deferred_fullscreen *d)
     d->program = gl_program_load("fullscreen.vert", "deferred_fullscreen.frag", NULL);
     if (!d->program)
         return false;
-    glGenQueries(1, &d->query);
+    d->query = gl_query_create();
     return gl_check("deferred_fullscreen_create");
 }
 
 void deferred_fullscreen_destroy(deferred_fullscreen *d)
 {
     gl_program_destroy(&d->program);
-    if (d->query)
-        glDeleteQueries(1, &d->query);
+    gl_query_destroy(&d->query);
     memset(d, 0, sizeof *d);
 }
 

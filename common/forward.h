@@ -6,6 +6,10 @@
  *   forward_shaded_pixels(f)                fragments that passed the depth test in the last
  *                                           shading pass (GL_SAMPLES_PASSED), when counting is on
  *
+ * Objects are drawn in batches (gpu_scene_draw): one instanced draw per run of objects sharing a mesh.
+ * Depth ties: every pass that draws the scene uses GL_LEQUAL, so where two surfaces have exactly
+ * the same depth the one drawn last wins, with or without a pre-pass and in the G-buffer alike.
+ *
  * Options are the honest optimisations a forward renderer turns on:
  *   prepass      depth-only pass first, then shade with GL_EQUAL: each pixel shaded once
  *   light_lists  per object, only the lights whose sphere reaches the object's bounding sphere
@@ -25,29 +29,14 @@ typedef struct forward_options {
     bool linear_output;
 } forward_options;
 
-/* Uniform locations of one shading program (the display-encoded one or the linear one). */
-typedef struct forward_locations {
-    gpu_object_uniforms object;
-    GLint view_proj, eye, albedo, specular, shininess, use_list, light_list, list_offset, list_count;
-} forward_locations;
-
 typedef struct forward {
     GLuint program, depth_program, linear_program;
     GLuint list_buffer, list_texture;
     GLuint query;
-    int *list;      /* light indices, object after object */
-    int *offsets;   /* per object: first index in list, and count */
-    int *counts;
+    int *list;         /* per object (first, count), then the light indices, object after object */
     size_t list_cap;
-    int object_cap;
     long list_entries; /* sum of list lengths in the last frame */
     long shaded_pixels;
-    struct {
-        gpu_object_uniforms object, depth_object;
-        GLint view_proj, depth_view_proj, eye, albedo, specular, shininess, use_list, light_list, list_offset,
-            list_count;
-    } loc;
-    forward_locations linear_loc;
 } forward;
 
 bool forward_create(forward *f);

@@ -26,13 +26,6 @@ bool gbuffer_create(gbuffer *g, int width, int height)
         gbuffer_destroy(g);
         return false;
     }
-    GLuint p = g->program;
-    g->loc.object.model = glGetUniformLocation(p, "u_model");
-    g->loc.object.normal_matrix = glGetUniformLocation(p, "u_normal_matrix");
-    g->loc.view_proj = glGetUniformLocation(p, "u_view_proj");
-    g->loc.albedo = glGetUniformLocation(p, "u_albedo");
-    g->loc.specular = glGetUniformLocation(p, "u_specular");
-    g->loc.shininess = glGetUniformLocation(p, "u_shininess");
     return gl_check("gbuffer_create");
 }
 
@@ -51,7 +44,6 @@ void gbuffer_destroy(gbuffer *g)
 
 bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
 {
-    const scene *s = gs->src;
     if (g->fbo.width != gs->view.width || g->fbo.height != gs->view.height) {
         log_error("gbuffer is %dx%d but the view is %dx%d (call gbuffer_resize)", g->fbo.width, g->fbo.height,
                   gs->view.width, gs->view.height);
@@ -64,9 +56,10 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
     glDepthMask(GL_TRUE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    /* Same state as forward_render: an object hides another exactly where it does there. */
+    /* Same state as forward_render (GL_LEQUAL: on an exact depth tie the object drawn last wins):
+     * an object hides another exactly where it does there. */
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(GL_LEQUAL);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glDisable(GL_BLEND);
@@ -74,18 +67,13 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
     glEnable(GL_FRAMEBUFFER_SRGB);
 
     glUseProgram(g->program);
-    glUniformMatrix4fv(g->loc.view_proj, 1, GL_FALSE, (const float *)gs->view.view_proj);
-    for (int i = 0; i < s->object_count; i++) {
-        const scene_material *m = &s->materials[s->objects[i].material];
-        glUniform3fv(g->loc.albedo, 1, m->albedo);
-        glUniform1f(g->loc.specular, m->specular);
-        glUniform1f(g->loc.shininess, m->shininess);
-        gpu_scene_draw_object(gs, i, g->loc.object);
-    }
+    gpu_scene_bind_objects(gs, g->program, 0);
+    gpu_scene_draw(gs, g->program);
 
     glDisable(GL_FRAMEBUFFER_SRGB);
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return true;
 }

@@ -27,10 +27,6 @@
 typedef struct gbuffer {
     fbo fbo;         /* color[0] albedo, color[1] normal/material, depth */
     GLuint program;  /* geometry pass */
-    struct {
-        gpu_object_uniforms object;
-        GLint view_proj, albedo, specular, shininess;
-    } loc;
 } gbuffer;
 
 bool gbuffer_create(gbuffer *g, int width, int height);

@@ -231,6 +231,7 @@ COUNTED_PAIR(texture, glGenTextures, glDeleteTextures)
 COUNTED_PAIR(buffer, glGenBuffers, glDeleteBuffers)
 COUNTED_PAIR(framebuffer, glGenFramebuffers, glDeleteFramebuffers)
 COUNTED_PAIR(vertex_array, glGenVertexArrays, glDeleteVertexArrays)
+COUNTED_PAIR(query, glGenQueries, glDeleteQueries)
 
 long gl_live_objects(void) { return state.live_objects; }
 
@@ -260,10 +261,14 @@ bool gl_check(const char *where)
 static void GLAD_API_PTR debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                     const GLchar *message, const void *user)
 {
-    (void)source;
     (void)id;
     (void)length;
     (void)user;
+    /* A shader that fails to compile is reported once, with file names, by gl_program_load. */
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) {
+        log_debug("GL: %s", message);
+        return;
+    }
     if (type == GL_DEBUG_TYPE_ERROR) {
         state.errors++;
         log_error("GL error: %s", message);

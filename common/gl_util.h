@@ -4,8 +4,8 @@
  *                                         `#include "x.glsl"` is expanded, `defines` ("A 1\nB 2")
  *                                         become #defines; errors name the file and line
  *   gl_program_destroy(&program)
- *   gl_texture_create / gl_buffer_create / gl_framebuffer_create / gl_vertex_array_create
- *   gl_texture_destroy / gl_buffer_destroy / gl_framebuffer_destroy / gl_vertex_array_destroy
+ *   gl_texture_create / gl_buffer_create / gl_framebuffer_create / gl_vertex_array_create / gl_query_create
+ *   gl_texture_destroy / gl_buffer_destroy / gl_framebuffer_destroy / gl_vertex_array_destroy / ..._destroy
  *                                         create/delete pairs that count live objects
  *   gl_live_objects()                     objects created and not yet destroyed (leak checks)
  *   gl_check(where)                       glGetError loop; logs and returns false on error
@@ -27,10 +27,12 @@ GLuint gl_texture_create(void);
 GLuint gl_buffer_create(void);
 GLuint gl_framebuffer_create(void);
 GLuint gl_vertex_array_create(void);
+GLuint gl_query_create(void);
 void gl_texture_destroy(GLuint *id);
 void gl_buffer_destroy(GLuint *id);
 void gl_framebuffer_destroy(GLuint *id);
 void gl_vertex_array_destroy(GLuint *id);
+void gl_query_destroy(GLuint *id);
 long gl_live_objects(void);
 
 bool gl_check(const char *where);

@@ -37,7 +37,10 @@ bool gpu_scene_create(const scene *src, gpu_scene *out)
     out->world = calloc((size_t)src->object_count + 1, sizeof *out->world);
     out->normal_matrix = calloc((size_t)src->object_count + 1, sizeof *out->normal_matrix);
     out->bounds = calloc((size_t)src->object_count + 1, sizeof *out->bounds);
-    if (!out->meshes || !out->world || !out->normal_matrix || !out->bounds) {
+    out->batches = calloc((size_t)src->object_count + 1, sizeof *out->batches);
+    out->object_texels = calloc(((size_t)src->object_count + 1) * GPU_OBJECT_TEXELS * 4, sizeof(float));
+    if (!out->meshes || !out->world || !out->normal_matrix || !out->bounds || !out->batches ||
+        !out->object_texels) {
         log_error("out of memory for the scene's %d objects", src->object_count);
         gpu_scene_destroy(out);
         return false;
@@ -48,8 +51,18 @@ bool gpu_scene_create(const scene *src, gpu_scene *out)
             return false;
         }
     }
+    for (int i = 0; i < src->object_count; i++) {
+        int m = src->objects[i].mesh;
+        gpu_batch *last = out->batch_count ? &out->batches[out->batch_count - 1] : NULL;
+        if (last && last->mesh == m)
+            last->count++;
+        else
+            out->batches[out->batch_count++] = (gpu_batch){.mesh = m, .first = i, .count = 1};
+    }
     out->light_buffer = gl_buffer_create();
     out->light_texture = gl_texture_create();
+    out->object_buffer = gl_buffer_create();
+    out->object_texture = gl_texture_create();
     return gl_check("gpu_scene_create");
 }
 
@@ -60,7 +73,11 @@ void gpu_scene_destroy(gpu_scene *gs)
             mesh_destroy(&gs->meshes[i]);
     gl_buffer_destroy(&gs->light_buffer);
     gl_texture_destroy(&gs->light_texture);
+    gl_buffer_destroy(&gs->object_buffer);
+    gl_texture_destroy(&gs->object_texture);
     free(gs->meshes);
+    free(gs->batches);
+    free(gs->object_texels);
     free(gs->world);
     free(gs->normal_matrix);
     free(gs->bounds);
@@ -102,7 +119,24 @@ static void update_objects(gpu_scene *gs, float time)
         gs->bounds[i][1] = gs->world[i][3][1];
         gs->bounds[i][2] = gs->world[i][3][2];
         gs->bounds[i][3] = gs->meshes[o->mesh].bound_radius * smax;
+
+        float *t = gs->object_texels + (size_t)i * GPU_OBJECT_TEXELS * 4;
+        memcpy(t, gs->world[i], 16 * sizeof(float));
+        for (int c = 0; c < 3; c++) {
+            memcpy(t + 16 + 4 * c, gs->normal_matrix[i][c], 3 * sizeof(float));
+            t[16 + 4 * c + 3] = 0.0f;
+        }
+        const scene_material *m = &s->materials[o->material];
+        const float material[8] = {m->albedo[0], m->albedo[1], m->albedo[2], m->specular, m->shininess, 0, 0, 0};
+        memcpy(t + 28, material, sizeof material);
     }
+    size_t bytes = ((size_t)s->object_count + 1) * GPU_OBJECT_TEXELS * 4 * sizeof(float);
+    glBindBuffer(GL_TEXTURE_BUFFER, gs->object_buffer);
+    glBufferData(GL_TEXTURE_BUFFER, (GLsizeiptr)bytes, gs->object_texels, GL_STREAM_DRAW);
+    glBindTexture(GL_TEXTURE_BUFFER, gs->object_texture);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, gs->object_buffer);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 
 static bool update_lights(gpu_scene *gs, float time, double cutoff)
@@ -175,9 +209,21 @@ void gpu_scene_bind_lights(const gpu_scene *gs, GLuint program, int unit)
     glActiveTexture(GL_TEXTURE0);
 }
 
-void gpu_scene_draw_object(const gpu_scene *gs, int index, gpu_object_uniforms loc)
+void gpu_scene_bind_objects(const gpu_scene *gs, GLuint program, int unit)
 {
-    glUniformMatrix4fv(loc.model, 1, GL_FALSE, (const float *)gs->world[index]);
-    glUniformMatrix3fv(loc.normal_matrix, 1, GL_FALSE, (const float *)gs->normal_matrix[index]);
-    mesh_draw(&gs->meshes[gs->src->objects[index].mesh]);
+    glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+    glBindTexture(GL_TEXTURE_BUFFER, gs->object_texture);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(glGetUniformLocation(program, "u_objects"), unit);
+    glUniformMatrix4fv(glGetUniformLocation(program, "u_view_proj"), 1, GL_FALSE, (const float *)gs->view.view_proj);
+}
+
+void gpu_scene_draw(const gpu_scene *gs, GLuint program)
+{
+    GLint first = glGetUniformLocation(program, "u_first_object");
+    for (int b = 0; b < gs->batch_count; b++) {
+        const gpu_batch *batch = &gs->batches[b];
+        glUniform1i(first, batch->first);
+        mesh_draw_instanced(&gs->meshes[batch->mesh], batch->count);
+    }
 }

@@ -8,10 +8,16 @@
  *                                    never reach the cut-off are culled here (radius 0)
  *   gpu_scene_bind_lights(gs, program, unit)
  *                                    u_lights (texture buffer on `unit`), u_light_count, u_ambient
- *   gpu_scene_draw_object(gs, i, loc) set u_model / u_normal_matrix (uniform locations) and draw
+ *   gpu_scene_bind_objects(gs, program, unit)
+ *                                    u_objects (texture buffer on `unit`) and u_view_proj
+ *   gpu_scene_draw(gs, program)      every object: one instanced draw per batch of consecutive
+ *                                    objects that share a mesh (the city's 2,490 cubes are one draw)
  *
  * Light texels (RGBA32F, three per light): position.xyz + radius, radiance (I*colour) + 0,
  * attenuation kc kl kq + 0. An infinite radius is stored as FLT_MAX.
+ * Object texels (RGBA32F, GPU_OBJECT_TEXELS per object): the world matrix's four columns, the
+ * normal matrix's three columns, albedo + specular, shininess. shaders/forward.vert reads them
+ * for object u_first_object + gl_InstanceID, so a draw call costs the same for one cube or 2,490.
  */
 #ifndef COMMON_GPU_SCENE_H
 #define COMMON_GPU_SCENE_H
@@ -22,6 +28,7 @@
 #include <cglm/cglm.h>
 
 #define GPU_LIGHT_TEXELS 3
+#define GPU_OBJECT_TEXELS 9
 
 typedef struct frame_view {
     int width, height;
@@ -38,9 +45,10 @@ typedef struct gpu_light {
     int source;     /* index of the light in the scene */
 } gpu_light;
 
-typedef struct gpu_object_uniforms {
-    GLint model, normal_matrix;
-} gpu_object_uniforms;
+/* Consecutive objects with the same mesh, drawn with one glDrawElementsInstanced. */
+typedef struct gpu_batch {
+    int mesh, first, count;
+} gpu_batch;
 
 typedef struct gpu_scene {
     const scene *src;
@@ -52,8 +60,12 @@ typedef struct gpu_scene {
     int light_count;
     int culled_count;     /* lights dropped because they never reach the cut-off */
     int infinite_count;   /* lights without a finite radius */
+    gpu_batch *batches;
+    int batch_count;
     GLuint light_buffer, light_texture;
+    GLuint object_buffer, object_texture;
     float *texels;
+    float *object_texels;
     frame_view view;
     double cutoff;
     float time;
@@ -63,6 +75,7 @@ bool gpu_scene_create(const scene *src, gpu_scene *out);
 void gpu_scene_destroy(gpu_scene *gs);
 bool gpu_scene_update(gpu_scene *gs, float time, double cutoff, int width, int height);
 void gpu_scene_bind_lights(const gpu_scene *gs, GLuint program, int unit);
-void gpu_scene_draw_object(const gpu_scene *gs, int index, gpu_object_uniforms loc);
+void gpu_scene_bind_objects(const gpu_scene *gs, GLuint program, int unit);
+void gpu_scene_draw(const gpu_scene *gs, GLuint program);
 
 #endif

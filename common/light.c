@@ -149,9 +149,21 @@ void light_generate_bounds(const scene *s, float lo[3], float hi[3])
         glm_vec3_copy(s->objects[0].position, hi);
         for (int i = 0; i < s->object_count; i++) {
             const scene_object *o = &s->objects[i];
-            widen_bounds(lo, hi, o->position);
-            for (int k = 0; k < o->key_count; k++)
-                widen_bounds(lo, hi, o->keys[k].position);
+            /* The object's own size too, so a single large object does not swallow every light:
+             * built-in cubes and planes reach 0.5 from their origin, spheres and models about 1. */
+            bool unit_half = o->mesh >= 0 && o->mesh < s->mesh_count &&
+                             (s->meshes[o->mesh].kind == SCENE_MESH_CUBE || s->meshes[o->mesh].kind == SCENE_MESH_PLANE);
+            float reach = unit_half ? 0.5f : 1.0f;
+            for (int k = -1; k < o->key_count; k++) {
+                const float *p = k < 0 ? o->position : o->keys[k].position;
+                vec3 a, b;
+                for (int c = 0; c < 3; c++) {
+                    a[c] = p[c] - fabsf(o->scale[c]) * reach;
+                    b[c] = p[c] + fabsf(o->scale[c]) * reach;
+                }
+                widen_bounds(lo, hi, a);
+                widen_bounds(lo, hi, b);
+            }
         }
         for (int a = 0; a < 3; a++) {
             float margin = 0.1f * (hi[a] - lo[a]);

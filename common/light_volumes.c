@@ -52,7 +52,7 @@ bool light_volumes_create(light_volumes *lv, const gbuffer *g)
     lv->present_exposure = glGetUniformLocation(lv->present_program, "u_exposure");
     lv->index_buffer = gl_buffer_create();
     lv->index_texture = gl_texture_create();
-    glGenQueries(1, &lv->query);
+    lv->query = gl_query_create();
     if (!light_volumes_resize(lv, g)) {
         light_volumes_destroy(lv);
         return false;
@@ -70,8 +70,7 @@ void light_volumes_destroy(light_volumes *lv)
     fbo_destroy(&lv->accum);
     gl_buffer_destroy(&lv->index_buffer);
     gl_texture_destroy(&lv->index_texture);
-    if (lv->query)
-        glDeleteQueries(1, &lv->query);
+    gl_query_destroy(&lv->query);
     free(lv->indices);
     memset(lv, 0, sizeof *lv);
 }

@@ -269,6 +269,12 @@ void platform_set_title(const char *text)
         glfwSetWindowTitle(state.window, text);
 }
 
+void platform_set_window_size(int width, int height)
+{
+    if (state.window)
+        glfwSetWindowSize(state.window, width, height);
+}
+
 int platform_take_key(void)
 {
     if (state.key_count == 0)

@@ -10,6 +10,7 @@
  *   platform_poll()                events; sleeps while the window is minimised
  *   platform_present(fbo, w, h)    copy the app's framebuffer to the window and swap
  *   platform_set_title(text)
+ *   platform_set_window_size(w, h) ask for a new window size in screen units (no-op headless)
  *   platform_take_key()            next key pressed since the last call (PLATFORM_KEY_*), or 0
  *   platform_time()                monotonic seconds
  *
@@ -50,6 +51,7 @@ bool platform_should_close(void);
 void platform_poll(void);
 void platform_present(GLuint fbo, int width, int height);
 void platform_set_title(const char *text);
+void platform_set_window_size(int width, int height);
 int platform_take_key(void);
 double platform_time(void);
 

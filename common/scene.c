@@ -932,6 +932,7 @@ bool scene_add_light(scene *s, const scene_light *light)
         }
         memcpy(keys, light->keys, (size_t)light->key_count * sizeof *keys);
     }
+    const scene_light copy = *light; /* `light` may point into s->lights, which realloc may move */
     scene_light *grown = realloc(s->lights, ((size_t)s->light_count + 1) * sizeof *grown);
     if (!grown) {
         free(keys);
@@ -939,9 +940,9 @@ bool scene_add_light(scene *s, const scene_light *light)
         return false;
     }
     s->lights = grown;
-    s->lights[s->light_count] = *light;
+    s->lights[s->light_count] = copy;
     s->lights[s->light_count].keys = keys;
-    s->lights[s->light_count].key_count = keys ? light->key_count : 0;
+    s->lights[s->light_count].key_count = keys ? copy.key_count : 0;
     s->light_count++;
     return true;
 }

@@ -4,16 +4,17 @@
 
 in vec3 v_world;
 in vec3 v_normal;
+flat in int v_object;
+flat in vec3 v_albedo;
+flat in float v_specular;
+flat in float v_shininess;
 
 uniform vec3 u_eye;
-uniform vec3 u_albedo;
-uniform float u_specular;
-uniform float u_shininess;
 
-uniform bool u_use_list;           // per-object light list instead of all lights
+// Per-object light lists (common/forward.c): entries 2*o and 2*o+1 hold object o's first index
+// and count; the light indices follow.
+uniform bool u_use_list;
 uniform isamplerBuffer u_light_list;
-uniform int u_list_offset;
-uniform int u_list_count;
 
 out vec4 o_color;
 
@@ -21,11 +22,15 @@ void main()
 {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 v = safe_normalize(u_eye - v_world, n);
-    vec3 c = shade_ambient(u_albedo);
-    int count = u_use_list ? u_list_count : u_light_count;
+    vec3 c = shade_ambient(v_albedo);
+    int first = 0, count = u_light_count;
+    if (u_use_list) {
+        first = texelFetch(u_light_list, 2 * v_object).r;
+        count = texelFetch(u_light_list, 2 * v_object + 1).r;
+    }
     for (int k = 0; k < count; k++) {
-        int i = u_use_list ? texelFetch(u_light_list, u_list_offset + k).r : k;
-        c += shade_light(light_fetch(i), v_world, n, v, u_albedo, u_specular, u_shininess);
+        int i = u_use_list ? texelFetch(u_light_list, first + k).r : k;
+        c += shade_light(light_fetch(i), v_world, n, v, v_albedo, v_specular, v_shininess);
     }
 #ifdef OUTPUT_LINEAR
     o_color = vec4(c, 1.0); // linear radiance for a float target (the benchmark's HDR error)

@@ -6,10 +6,9 @@
 
 in vec3 v_world;
 in vec3 v_normal;
-
-uniform vec3 u_albedo;
-uniform float u_specular;
-uniform float u_shininess;
+flat in vec3 v_albedo;
+flat in float v_specular;
+flat in float v_shininess;
 
 layout(location = 0) out vec4 o_albedo;           // GL_COLOR_ATTACHMENT0, SRGB8_ALPHA8
 layout(location = 1) out vec4 o_normal_material;  // GL_COLOR_ATTACHMENT1, RGBA16F
@@ -18,6 +17,6 @@ void main()
 {
     // Same fallback as forward.frag, so a degenerate normal shades the same in both renderers.
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
-    o_albedo = vec4(u_albedo, 1.0); // linear; GL_FRAMEBUFFER_SRGB encodes it on write
-    o_normal_material = vec4(octahedral_encode_half(n), u_specular, u_shininess);
+    o_albedo = vec4(v_albedo, 1.0); // linear; GL_FRAMEBUFFER_SRGB encodes it on write
+    o_normal_material = vec4(octahedral_encode_half(n), v_specular, v_shininess);
 }

@@ -29,18 +29,24 @@ vec3 gbuffer_position(ivec2 pixel, float depth)
     return world.xyz / world.w;
 }
 
-surface gbuffer_read(ivec2 pixel)
+// The surface at a pixel whose depth the caller has already read (and its position computed).
+surface gbuffer_read_at(ivec2 pixel, float depth, vec3 position)
 {
     surface s;
-    float depth = texelFetch(u_gbuffer_depth, pixel, 0).r;
     vec4 nm = texelFetch(u_gbuffer_normal, pixel, 0);
     s.background = depth >= 1.0;
-    s.position = gbuffer_position(pixel, depth);
+    s.position = position;
     s.normal = octahedral_decode(nm.xy);
     s.albedo = texelFetch(u_gbuffer_albedo, pixel, 0).rgb;
     s.specular = nm.z;
     s.shininess = nm.w;
     return s;
+}
+
+surface gbuffer_read(ivec2 pixel)
+{
+    float depth = texelFetch(u_gbuffer_depth, pixel, 0).r;
+    return gbuffer_read_at(pixel, depth, gbuffer_position(pixel, depth));
 }
 
 #endif

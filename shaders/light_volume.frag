@@ -23,8 +23,12 @@ void main()
     // Depth alone says whether the surface is inside the sphere: the rest of the G-buffer is only
     // read for pixels the light reaches.
     float depth = texelFetch(u_gbuffer_depth, pixel, 0).r;
-    float d = length(v_light_position - gbuffer_position(pixel, depth));
-    float ring_width = 1.5 * fwidth(d); // derivatives while every fragment is still running
+    vec3 position = gbuffer_position(pixel, depth);
+    float d = length(v_light_position - position);
+    // Derivatives while every fragment is still running (u_view is uniform: the branch is too).
+    float ring_width = 0.0;
+    if (u_view == 1)
+        ring_width = 1.5 * fwidth(d);
     if (u_view == 2) {
         o_color = vec4(vec3(depth < 1.0 ? 1.0 / 16.0 : 0.0), 1.0);
         return;
@@ -37,7 +41,7 @@ void main()
         return;
 #endif
     }
-    surface s = gbuffer_read(pixel);
+    surface s = gbuffer_read_at(pixel, depth, position);
     light_data L = light_data(v_light_position, v_light_radius, v_light_radiance, v_light_attenuation);
     vec3 n = s.normal;
     vec3 v = safe_normalize(u_eye - s.position, n);

@@ -66,13 +66,20 @@ function(chapters_04_07_tests)
     course_agreement_test(07_renderer_forward 0 0 07_face_culling --renderer forward VS 00_forward)
     foreach(case "time3|--time@3" "inside_volume|--scene@${S}/inside_volume.scene"
                  "far_plane|--scene@${S}/far_plane.scene" "near_plane|--scene@${S}/near_plane.scene"
-                 "cutoff0|--cutoff@0" "lights64|--lights@64" "size200x300|--size@200x300")
+                 "cutoff0|--cutoff@0" "size200x300|--size@200x300")
       string(REPLACE "|" ";" parts "${case}")
       list(GET parts 0 name)
       list(GET parts 1 args)
       string(REPLACE "@" ";" args "${args}")
       course_agreement_test(07_vs_forward_${name} 1 0.0001 07_face_culling ${args} VS 00_forward ${args})
     endforeach()
+    # 64 generated lights put 64 cut-off spheres through the picture. Where a sphere passes through
+    # a pixel, the position rebuilt from depth and forward's interpolated position (which differ by
+    # the depth buffer's precision, docs/hard-cases.md case 5) can fall on opposite sides of it, and
+    # the light's cut-off step (up to 10/255 in dark areas) shows in one picture only. Measured:
+    # 8 pixels of 76,800 (0.0104 %), max 10/255; the bound allows 0.02 % (15 pixels).
+    course_agreement_test(07_vs_forward_lights64 1 0.0002
+      07_face_culling --lights 64 VS 00_forward --lights 64)
     # The bugs chapter 07 shows, each on the scene where it appears.
     # (At the default cut-off the camera is inside every volume, so only back faces are on screen:
     # smaller volumes show the doubling.)
