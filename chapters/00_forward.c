@@ -27,11 +27,7 @@ int main(int argc, char **argv)
                 .program = "00_forward",
                 .summary = "Chapter 00: forward rendering, the baseline every deferred chapter is compared with.",
                 .renderers = renderers,
-                .keys = "  R        next renderer (forward, naive, pre-pass only, light lists only)\n"
-                        "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
-                        "  Space    pause the animation\n"
-                        "  P        save a screenshot into out/\n"
-                        "  Esc, Q   quit\n",
+                .keys = "  R        next renderer (forward, naive, pre-pass only, light lists only)\n",
             },
         .frame = frame,
     };

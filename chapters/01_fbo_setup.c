@@ -115,11 +115,7 @@ int main(int argc, char **argv)
                 .program = "01_fbo_setup",
                 .summary = "Chapter 01: render into an offscreen framebuffer, then present it.",
                 .renderers = renderers,
-                .keys = "  R        switch offscreen / forward (straight into the target)\n"
-                        "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
-                        "  Space    pause the animation\n"
-                        "  P        save a screenshot into out/\n"
-                        "  Esc, Q   quit\n",
+                .keys = "  R        switch offscreen / forward (straight into the target)\n",
             },
         .init = init,
         .resize = resize,

@@ -104,11 +104,7 @@ int main(int argc, char **argv)
                 .renderers = renderers,
                 .views = views,
                 .keys = "  V        next view: albedo, normal, depth, specular, final\n"
-                        "  R        switch deferred / forward\n"
-                        "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
-                        "  Space    pause the animation\n"
-                        "  P        save a screenshot into out/\n"
-                        "  Esc, Q   quit\n",
+                        "  R        switch deferred / forward\n",
             },
         .init = init,
         .resize = resize,

@@ -61,11 +61,7 @@ int main(int argc, char **argv)
                 .program = "03_fullscreen_phong",
                 .summary = "Chapter 03: deferred shading with a full-screen lighting pass over all lights.",
                 .renderers = renderers,
-                .keys = "  R        switch deferred / forward (the pictures must agree)\n"
-                        "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
-                        "  Space    pause the animation\n"
-                        "  P        save a screenshot into out/\n"
-                        "  Esc, Q   quit\n",
+                .keys = "  R        switch deferred / forward (the pictures must agree)\n",
             },
         .init = init,
         .resize = resize,

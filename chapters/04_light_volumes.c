@@ -99,11 +99,7 @@ int main(int argc, char **argv)
                     "Chapter 04: one instanced sphere per light; only the pixels it covers are shaded.",
                 .renderers = renderers,
                 .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-                        "  S        scale the volume mesh by 1 / inradius, or not\n"
-                        "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
-                        "  Space    pause the animation\n"
-                        "  P        save a screenshot into out/\n"
-                        "  Esc, Q   quit\n",
+                        "  S        scale the volume mesh by 1 / inradius, or not\n",
                 .extras =
                     {
                         {"radius", "R", "radius of every light volume (chapter 05 solves one per light)",

@@ -102,11 +102,7 @@ int main(int argc, char **argv)
                 .renderers = renderers,
                 .views = views,
                 .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-                        "  V        view: lit, or lit + the cut-off ring of every light\n"
-                        "  [ ] 0    halve / double the cut-off (the ring moves); 0 toggles exact\n"
-                        "  Space    pause the animation\n"
-                        "  P        save a screenshot into out/\n"
-                        "  Esc, Q   quit\n",
+                        "  V        view: lit, or lit + the cut-off ring of every light\n",
             },
         .init = init,
         .resize = resize,

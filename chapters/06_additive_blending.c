@@ -110,11 +110,7 @@ int main(int argc, char **argv)
                 .keys = "  R        switch renderer (deferred light volumes, forward)\n"
                         "  A        accumulation buffer: rgba16f or rgba8 (saturates)\n"
                         "  T        tone map: none, exposure, reinhard\n"
-                        "  - =      halve / double the exposure\n"
-                        "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
-                        "  Space    pause the animation\n"
-                        "  P        save a screenshot into out/\n"
-                        "  Esc, Q   quit\n",
+                        "  - =      halve / double the exposure\n",
                 .extras =
                     {
                         {"accum", "FORMAT", "accumulation buffer format", accum_formats, "rgba16f"},

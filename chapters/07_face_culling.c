@@ -103,11 +103,7 @@ int main(int argc, char **argv)
                 .keys = "  R        switch renderer (deferred light volumes, forward)\n"
                         "  V        view: lit, or overdraw (lighting fragments per pixel)\n"
                         "  C        cull front faces (right), back faces, or none (both wrong)\n"
-                        "  D        depth clamp on / off\n"
-                        "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
-                        "  Space    pause the animation\n"
-                        "  P        save a screenshot into out/\n"
-                        "  Esc, Q   quit\n",
+                        "  D        depth clamp on / off\n",
                 .extras =
                     {
                         {"cull", "FACES", "faces culled: front is right; back and none show bugs", culls,

@@ -80,6 +80,8 @@ static char *read_file(const char *path)
     return buf;
 }
 
+static bool append_source(source_text *s, const char *label, const char *text, const char *defines, int depth);
+
 /* Appends shaders/<name> to s; the top-level file keeps its #version line first, then the defines. */
 static bool append_file(source_text *s, const char *name, const char *defines, int depth)
 {
@@ -94,12 +96,27 @@ static bool append_file(source_text *s, const char *name, const char *defines, i
         log_error("%s: cannot read shader", path);
         return false;
     }
+    char label[160];
+    snprintf(label, sizeof label, "shaders/%s", name);
+    bool ok = append_source(s, label, text, defines, depth);
+    free(text);
+    return ok;
+}
+
+/* Appends `text` (named `label` in error messages), expanding its #include lines; the top-level
+ * source keeps its #version line first, then the defines. */
+static bool append_source(source_text *s, const char *label, const char *text, const char *defines, int depth)
+{
+    if (depth > 4 || s->count >= MAX_SOURCES) {
+        log_error("%s: includes nested too deeply", label);
+        return false;
+    }
     int id = s->count++;
-    snprintf(s->names[id], sizeof s->names[id], "shaders/%s", name);
+    snprintf(s->names[id], sizeof s->names[id], "%s", label);
     bool ok = depth == 0 || text_printf(s, "#line %d %d\n", 1, id);
     int line_no = 0;
-    for (char *line = text; ok && *line;) {
-        char *end = strchr(line, '\n');
+    for (const char *line = text; ok && *line;) {
+        const char *end = strchr(line, '\n');
         size_t n = end ? (size_t)(end - line) + 1 : strlen(line);
         line_no++;
         char inc[128];
@@ -126,7 +143,6 @@ static bool append_file(source_text *s, const char *name, const char *defines, i
         }
         line = end ? end + 1 : line + n;
     }
-    free(text);
     return ok;
 }
 
@@ -147,10 +163,12 @@ static void log_info_log(const source_text *s, const char *what, const char *log
     }
 }
 
-static GLuint compile(GLenum type, const char *name, const char *defines)
+/* One stage from shaders/<name>, or from `text` (called `name` in messages) when text is given. */
+static GLuint compile(GLenum type, const char *name, const char *text, const char *defines)
 {
     source_text s = {0};
-    if (!append_file(&s, name, defines, 0)) {
+    bool ok = text ? append_source(&s, name, text, defines, 0) : append_file(&s, name, defines, 0);
+    if (!ok) {
         free(s.text);
         return 0;
     }
@@ -158,13 +176,13 @@ static GLuint compile(GLenum type, const char *name, const char *defines)
     const char *src = s.text;
     glShaderSource(sh, 1, &src, NULL);
     glCompileShader(sh);
-    GLint ok = 0;
-    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
+    GLint status = 0;
+    glGetShaderiv(sh, GL_COMPILE_STATUS, &status);
+    if (!status) {
         char log[8192];
         glGetShaderInfoLog(sh, sizeof log, NULL, log);
         char what[192];
-        snprintf(what, sizeof what, "compiling shaders/%s", name);
+        snprintf(what, sizeof what, "compiling %s%s", text ? "" : "shaders/", name);
         log_info_log(&s, what, log);
         glDeleteShader(sh);
         sh = 0;
@@ -173,12 +191,11 @@ static GLuint compile(GLenum type, const char *name, const char *defines)
     return sh;
 }
 
-GLuint gl_program_load(const char *vert, const char *frag, const char *defines)
+static GLuint link(GLuint vs, GLuint fs, const char *vert, const char *frag)
 {
-    GLuint vs = compile(GL_VERTEX_SHADER, vert, defines);
-    GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, frag, defines) : 0;
-    if (!fs) {
+    if (!vs || !fs) {
         glDeleteShader(vs);
+        glDeleteShader(fs);
         return 0;
     }
     GLuint p = glCreateProgram();
@@ -192,12 +209,29 @@ GLuint gl_program_load(const char *vert, const char *frag, const char *defines)
     if (!ok) {
         char log[4096];
         glGetProgramInfoLog(p, sizeof log, NULL, log);
-        log_error("linking shaders/%s + shaders/%s failed: %s", vert, frag, log);
+        log_error("linking %s + %s failed: %s", vert, frag, log);
         glDeleteProgram(p);
         return 0;
     }
     state.live_objects++;
     return p;
+}
+
+GLuint gl_program_load(const char *vert, const char *frag, const char *defines)
+{
+    GLuint vs = compile(GL_VERTEX_SHADER, vert, NULL, defines);
+    GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, frag, NULL, defines) : 0;
+    return link(vs, fs, vert, frag);
+}
+
+GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines)
+{
+    char vname[160], fname[160];
+    snprintf(vname, sizeof vname, "%s (vertex)", name);
+    snprintf(fname, sizeof fname, "%s (fragment)", name);
+    GLuint vs = compile(GL_VERTEX_SHADER, vname, vert_text, defines);
+    GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, fname, frag_text, defines) : 0;
+    return link(vs, fs, vname, fname);
 }
 
 void gl_program_destroy(GLuint *program)

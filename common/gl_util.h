@@ -3,6 +3,9 @@
  *   gl_program_load(vert, frag, defines)  compile + link shaders/<vert> and shaders/<frag>;
  *                                         `#include "x.glsl"` is expanded, `defines` ("A 1\nB 2")
  *                                         become #defines; errors name the file and line
+ *   gl_program_create(name, vert_text, frag_text, defines)
+ *                                         the same from source text in memory (tests); `name` labels
+ *                                         its messages, and #include still reads from shaders/
  *   gl_program_destroy(&program)
  *   gl_texture_create / gl_buffer_create / gl_framebuffer_create / gl_vertex_array_create / gl_query_create
  *   gl_texture_destroy / gl_buffer_destroy / gl_framebuffer_destroy / gl_vertex_array_destroy / ..._destroy
@@ -21,6 +24,7 @@
 #include <stdbool.h>
 
 GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
+GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
 void gl_program_destroy(GLuint *program);
 
 GLuint gl_texture_create(void);

@@ -23,98 +23,9 @@ void hard_context_create(int width, int height)
     }
 }
 
-static char *read_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        log_error("%s: cannot read", path);
-        return NULL;
-    }
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *buf = n >= 0 ? malloc((size_t)n + 1) : NULL;
-    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
-        free(buf);
-        buf = NULL;
-    }
-    if (buf)
-        buf[n] = '\0';
-    fclose(f);
-    return buf;
-}
-
-/* The source with its include line replaced by shaders/shading.glsl, so the test shades with the
- * renderers' own function rather than a copy of it. */
-static char *expand_source(const char *src)
-{
-    static const char directive[] = "#include \"shading.glsl\"";
-    const char *at = strstr(src, directive);
-    if (!at)
-        return strdup(src);
-    char path[1024];
-    snprintf(path, sizeof path, "%s/shading.glsl", gl_shader_dir());
-    char *inc = read_text(path);
-    if (!inc)
-        return NULL;
-    size_t head = (size_t)(at - src), inc_len = strlen(inc), tail = strlen(at + sizeof directive - 1);
-    char *out = malloc(head + inc_len + tail + 2);
-    if (out) {
-        memcpy(out, src, head);
-        memcpy(out + head, inc, inc_len);
-        out[head + inc_len] = '\n';
-        memcpy(out + head + inc_len + 1, at + sizeof directive - 1, tail + 1);
-    }
-    free(inc);
-    return out;
-}
-
-static GLuint compile(GLenum type, const char *src)
-{
-    char *text = expand_source(src);
-    if (!text)
-        return 0;
-    GLuint s = glCreateShader(type);
-    const char *p = text;
-    glShaderSource(s, 1, &p, NULL);
-    glCompileShader(s);
-    free(text);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char info[2048];
-        glGetShaderInfoLog(s, sizeof info, NULL, info);
-        log_error("test shader: %s", info);
-        glDeleteShader(s);
-        return 0;
-    }
-    return s;
-}
-
 GLuint hard_program_create(const char *vert, const char *frag)
 {
-    GLuint vs = compile(GL_VERTEX_SHADER, vert), fs = compile(GL_FRAGMENT_SHADER, frag);
-    if (!vs || !fs) {
-        glDeleteShader(vs);
-        glDeleteShader(fs);
-        return 0;
-    }
-    GLuint p = glCreateProgram();
-    glAttachShader(p, vs);
-    glAttachShader(p, fs);
-    glLinkProgram(p);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char info[2048];
-        glGetProgramInfoLog(p, sizeof info, NULL, info);
-        log_error("test program: %s", info);
-        glDeleteProgram(p);
-        return 0;
-    }
-    return p;
+    return gl_program_create("test program", vert, frag, NULL);
 }
 
 void hard_read_rgba_float(GLuint fbo, int width, int height, float *out)
