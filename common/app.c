@@ -12,6 +12,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#define MINIMISE_WAIT 2.0  /* seconds --minimise-cycle waits for the window manager to iconify */
+#define MINIMISED_FOR 0.1  /* seconds it stays minimised before the loop asks for it back */
+
 forward_options app_forward_options(const char *name)
 {
     forward_options o = {.prepass = true, .light_lists = true};
@@ -258,9 +261,23 @@ int app_run(const app_desc *desc, int argc, char **argv)
     long total = (long)opt.frames + (opt.bench ? opt.warmup : 0);
     long cycle_end = opt.resize_cycle > 0 ? opt.resize_cycle + 1 : 0, live_before = 0;
     int base_w = a.width, base_h = a.height;
+    long live_before_minimise = 0, minimised_frames = 0;
     if (total > 0)
-        total += cycle_end;
+        total += cycle_end + opt.minimise_cycle;
     while (running) {
+        /* --minimise-cycle: one round per frame boundary; the platform_poll() below must sleep
+         * through it, so any frame drawn while minimised is counted as a failure. */
+        if (a.frame_index >= 1 && a.frame_index <= opt.minimise_cycle) {
+            if (a.frame_index == 1)
+                live_before_minimise = gl_live_objects();
+            if (!platform_minimise(MINIMISE_WAIT)) {
+                log_error("no window manager: cannot minimise");
+                rc = CLI_EXIT_SKIP;
+                break;
+            }
+            log_debug("minimised (round %ld of %d)", a.frame_index, opt.minimise_cycle);
+            platform_restore_at(platform_time() + MINIMISED_FOR);
+        }
         platform_poll();
         if (platform_should_close())
             break;
@@ -292,6 +309,8 @@ int app_run(const app_desc *desc, int argc, char **argv)
             a.time += (float)(now - last_clock);
         last_clock = now;
 
+        if (platform_is_minimised())
+            minimised_frames++;
         double t0 = platform_time();
         if (!gpu_scene_update(&a.gs, a.time, a.cutoff, a.width, a.height) || !desc->frame(&a)) {
             rc = CLI_EXIT_RUNTIME;
@@ -327,6 +346,15 @@ int app_run(const app_desc *desc, int argc, char **argv)
     if (rc == CLI_EXIT_OK && cycle_end > 0 && a.frame_index > cycle_end && gl_live_objects() != live_before) {
         log_error("--resize-cycle: %ld live GL objects before %d resizes, %ld after", live_before,
                   opt.resize_cycle, gl_live_objects());
+        rc = CLI_EXIT_RUNTIME;
+    }
+    if (rc == CLI_EXIT_OK && minimised_frames > 0) {
+        log_error("--minimise-cycle: %ld frame(s) drawn while the window was minimised", minimised_frames);
+        rc = CLI_EXIT_RUNTIME;
+    } else if (rc == CLI_EXIT_OK && opt.minimise_cycle > 0 && a.frame_index > opt.minimise_cycle &&
+               gl_live_objects() != live_before_minimise) {
+        log_error("--minimise-cycle: %ld live GL objects before %d minimise cycles, %ld after",
+                  live_before_minimise, opt.minimise_cycle, gl_live_objects());
         rc = CLI_EXIT_RUNTIME;
     }
     if (rc == CLI_EXIT_OK && opt.bench && a.frame_index == total)

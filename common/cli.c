@@ -78,6 +78,9 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --gl-debug               report GL debug messages; any GL error fails the run\n"
             "  --resize-cycle N         after the first frame, resize N times and back; fail if GL\n"
             "                           objects leaked (window: resizes the window)\n"
+            "  --minimise-cycle N       window: after the first frame, minimise and restore N times;\n"
+            "                           fail if a frame was drawn while minimised or GL objects leaked\n"
+            "                           (exit 77 when nothing can minimise it: no window manager)\n"
             "  --verbose                more log lines\n",
             LIGHT_DEFAULT_CUTOFF);
     /* The chapter's own keys, then the ones app.c gives every chapter. */
@@ -251,6 +254,10 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
             if (!(v = option_value(argc, argv, &i, "--resize-cycle")) ||
                 !parse_int(v, 0, 100000, &out->resize_cycle))
                 return usage_error(desc, "bad --resize-cycle '%s': expected 0..100000", v ? v : "");
+        } else if (is_option(a, "--minimise-cycle")) {
+            if (!(v = option_value(argc, argv, &i, "--minimise-cycle")) ||
+                !parse_int(v, 0, 1000, &out->minimise_cycle))
+                return usage_error(desc, "bad --minimise-cycle '%s': expected 0..1000", v ? v : "");
         } else if (is_option(a, "--cutoff")) {
             if (!(v = option_value(argc, argv, &i, "--cutoff")) || !parse_double(v, 0.0, 1e6, &out->cutoff))
                 return usage_error(desc, "bad --cutoff '%s': expected a number >= 0", v ? v : "");
@@ -282,5 +289,9 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
     if (out->resize_cycle > 0 && out->bench)
         return usage_error(desc, "%s changes the size between timed frames: not with --bench",
                            "--resize-cycle");
+    if (out->minimise_cycle > 0 && out->headless)
+        return usage_error(desc, "%s minimises the window: not with --headless", "--minimise-cycle");
+    if (out->minimise_cycle > 0 && out->bench)
+        return usage_error(desc, "%s stops the frames it would time: not with --bench", "--minimise-cycle");
     return CLI_EXIT_OK;
 }

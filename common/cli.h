@@ -68,6 +68,7 @@ typedef struct cli_options {
     bool paused;          /* window: start with the animation stopped at --time */
     bool gl_debug;        /* KHR_debug on; a GL error fails the run */
     int resize_cycle;     /* resize N times after the first frame, then check for leaked GL objects */
+    int minimise_cycle;   /* window: minimise and restore N times; no frame may be drawn while minimised */
     bool verbose;
     const char *extra_values[CLI_MAX_EXTRAS];
 } cli_options;

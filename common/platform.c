@@ -17,6 +17,7 @@
 #include <time.h>
 
 #define KEY_QUEUE 32
+#define RESTORE_WAIT 2.0 /* seconds platform_poll waits for a window it asked back (test hook) */
 
 static struct {
     cli_backend backend;
@@ -27,6 +28,7 @@ static struct {
     unsigned char osmesa_pixel[4]; /* OSMesa wants a colour buffer; we never draw to it */
     int keys[KEY_QUEUE];
     int key_count;
+    double restore_at; /* > 0: platform_restore_at() was called */
 } state;
 
 double platform_time(void)
@@ -238,19 +240,66 @@ void platform_framebuffer_size(int *width, int *height)
 
 bool platform_should_close(void) { return state.window && glfwWindowShouldClose(state.window); }
 
+bool platform_is_minimised(void)
+{
+    if (!state.window)
+        return false;
+    /* Windows reports a 0x0 framebuffer; X11 keeps the size and only sets the iconified state. */
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(state.window, &w, &h);
+    return w == 0 || h == 0 || glfwGetWindowAttrib(state.window, GLFW_ICONIFIED);
+}
+
+/* Sleeps until an event arrives; with a restore scheduled, wakes up to ask for the window back and
+ * gives up RESTORE_WAIT seconds later, so a test hook can never hang the run. */
+static void wait_minimised(void)
+{
+    double give_up = 0.0;
+    while (platform_is_minimised() && !glfwWindowShouldClose(state.window)) {
+        double now = platform_time();
+        if (state.restore_at <= 0.0) {
+            glfwWaitEvents();
+        } else if (now < state.restore_at) {
+            glfwWaitEventsTimeout(state.restore_at - now);
+        } else if (give_up == 0.0) {
+            glfwRestoreWindow(state.window);
+            give_up = now + RESTORE_WAIT;
+        } else if (now < give_up) {
+            glfwWaitEventsTimeout(give_up - now);
+        } else {
+            log_warn("the window is still minimised %.0f s after asking for it back", RESTORE_WAIT);
+            break;
+        }
+    }
+    state.restore_at = 0.0;
+}
+
 void platform_poll(void)
 {
     if (!state.window)
         return;
     glfwPollEvents();
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(state.window, &w, &h);
     /* Minimised: nothing to draw until the window comes back. */
-    while ((w == 0 || h == 0) && !glfwWindowShouldClose(state.window)) {
-        glfwWaitEvents();
-        glfwGetFramebufferSize(state.window, &w, &h);
-    }
+    wait_minimised();
 }
+
+bool platform_minimise(double timeout)
+{
+    if (!state.window)
+        return false;
+    glfwIconifyWindow(state.window);
+    /* Iconifying is a request to the window manager; without one it silently does nothing. */
+    double end = platform_time() + timeout;
+    while (!glfwGetWindowAttrib(state.window, GLFW_ICONIFIED)) {
+        double left = end - platform_time();
+        if (left <= 0.0)
+            return false;
+        glfwWaitEventsTimeout(left < 0.01 ? left : 0.01);
+    }
+    return true;
+}
+
+void platform_restore_at(double when) { state.restore_at = when; }
 
 void platform_present(GLuint fbo, int width, int height)
 {

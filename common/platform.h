@@ -7,7 +7,13 @@
  *   platform_is_windowed()
  *   platform_framebuffer_size(&w, &h)   pixels, not screen units (HiDPI); 0x0 when minimised
  *   platform_should_close()
+ *   platform_is_minimised()        the window is iconified or its framebuffer is 0x0
  *   platform_poll()                events; sleeps while the window is minimised
+ *   platform_minimise(timeout)     test hook: iconify the window and wait up to timeout seconds
+ *                                  until it is; false when it never is (no window manager)
+ *   platform_restore_at(when)      test hook: the next platform_poll(), if the window is minimised,
+ *                                  asks for it back at platform_time() == when and sleeps at most
+ *                                  2 s more
  *   platform_present(fbo, w, h)    copy the app's framebuffer to the window and swap
  *   platform_set_title(text)
  *   platform_set_window_size(w, h) ask for a new window size in screen units (no-op headless)
@@ -48,7 +54,10 @@ const char *platform_backend_name(void);
 bool platform_is_windowed(void);
 void platform_framebuffer_size(int *width, int *height);
 bool platform_should_close(void);
+bool platform_is_minimised(void);
 void platform_poll(void);
+bool platform_minimise(double timeout);
+void platform_restore_at(double when);
 void platform_present(GLuint fbo, int width, int height);
 void platform_set_title(const char *text);
 void platform_set_window_size(int width, int height);
