@@ -1,8 +1,18 @@
 /* 00_forward.c - the baseline: forward rendering, every light evaluated while drawing each object.
+ * Every later chapter is compared with this picture (key R, or --renderer forward).
  *
- * Everything this chapter needs lives in common/forward.c, because every later chapter switches
- * back to it (key R, or --renderer forward) to compare. Here you can turn its two optimisations
- * on and off and watch what they buy:
+ * One frame is up to three passes, each written out in frame() below:
+ *   1. per-object light lists (CPU): for each object, the lights whose sphere of influence
+ *      reaches its bounding sphere, uploaded as a texture buffer of indices;
+ *   2. depth pre-pass: every object into the depth buffer only, colour writes off;
+ *   3. shading: every object again with shaders/forward.frag, which loops over the object's list
+ *      (or over every light) and calls shade_light() from shaders/shading.glsl. After a pre-pass
+ *      the depth test is GL_EQUAL with writes off, so only the visible fragment of each pixel
+ *      pays for its lights.
+ * The passes themselves (forward_build_light_lists, forward_draw_depth, forward_draw_shaded) are
+ * in common/forward.c, because later chapters switch back to this renderer to compare.
+ *
+ * The renderers of this chapter turn the two optimisations on and off (common/renderers.c):
  *   forward           depth pre-pass + per-object light lists (the default, the best forward)
  *   forward-naive     one pass, every object shaded with every light
  *   forward-prepass   depth pre-pass only: each visible pixel is shaded once
@@ -10,13 +20,75 @@
  * Read docs/00_forward.md alongside.
  */
 #include "app.h"
+#include "gl_util.h"
+#include "log.h"
 
 static const char *const renderers[] = {"forward", "forward-naive", "forward-prepass", "forward-lists", NULL};
 
+/* Every pass draws the scene with GL_LEQUAL, so on an exact depth tie the object drawn last wins,
+ * with or without a pre-pass (and in the G-buffer of the deferred chapters alike). */
+static const gl_pass_state scene_pass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
+
+/* After the pre-pass the depth buffer is final: shade only the fragment that wrote it. */
+static const gl_pass_state shade_after_prepass = {.cull = GL_BACK, .depth_func = GL_EQUAL};
+
+static struct {
+    forward fwd;
+    long frames_logged; /* the light-list statistics are logged (--verbose) for the first frame */
+} state;
+
+static bool init(app *a)
+{
+    (void)a;
+    return forward_create(&state.fwd);
+}
+
+/* --verbose: how much the lists save, per frame. */
+static void log_lists(const app *a)
+{
+    int objects = a->scene.object_count;
+    log_debug("light lists: %ld (object, light) pairs for %d objects and %d lights: %.1f lights per "
+              "object instead of %d",
+              state.fwd.list_entries, objects, a->gs.light_count,
+              objects ? (double)state.fwd.list_entries / objects : 0.0, a->gs.light_count);
+}
+
 static bool frame(app *a)
 {
-    /* 1. one pass per object (after an optional depth pre-pass), all lights in a texture buffer */
-    return app_render_forward(a);
+    const forward_options o = renderer_table[renderer_find(a->cli->renderers[a->renderer])].forward_options;
+    const gpu_scene *gs = &a->gs;
+
+    /* 1. per-object light lists, on the CPU */
+    if (o.light_lists && !forward_build_light_lists(&state.fwd, gs))
+        return false;
+    if (o.light_lists && state.frames_logged++ == 0)
+        log_lists(a);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
+    glViewport(0, 0, a->width, a->height);
+    gl_pass_state_apply(&scene_pass);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    /* 2. depth pre-pass: the nearest depth of every pixel, before any shading */
+    if (o.prepass) {
+        forward_draw_depth(&state.fwd, gs);
+        gl_pass_state_apply(&shade_after_prepass);
+    }
+
+    /* 3. shading: every object, each fragment looping over its lights */
+    const forward_options shade = {.light_lists = o.light_lists, .count_pixels = a->options->bench};
+    if (!forward_draw_shaded(&state.fwd, gs, shade))
+        return false;
+    a->shaded_pixels = forward_shaded_pixels(&state.fwd);
+    gl_pass_state_reset();
+    return gl_check("00 frame");
+}
+
+static void cleanup(app *a)
+{
+    (void)a;
+    forward_destroy(&state.fwd);
 }
 
 int main(int argc, char **argv)
@@ -29,7 +101,9 @@ int main(int argc, char **argv)
                 .renderers = renderers,
                 .keys = "  R        next renderer (forward, naive, pre-pass only, light lists only)\n",
             },
+        .init = init,
         .frame = frame,
+        .cleanup = cleanup,
     };
     return app_run(&desc, argc, argv);
 }

@@ -82,9 +82,8 @@ static bool frame(app *a)
     if (app_renderer_is(a, "forward"))
         return app_render_forward(a);
 
-    /* 1. draw the scene into our framebuffer instead of the target */
-    glBindFramebuffer(GL_FRAMEBUFFER, state.fbo);
-    if (!forward_render(&a->fwd, &a->gs, app_forward_options("forward")))
+    /* 1. draw the scene (chapter 00's forward renderer) into our framebuffer instead of the target */
+    if (!renderers_draw(&a->renderers, RENDERER_FORWARD, &a->gs, state.fbo, (renderer_draw_options){0}, NULL))
         return false;
 
     /* 2. present: bind the colour texture and cover the target with one triangle */

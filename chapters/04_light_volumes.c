@@ -2,22 +2,24 @@
  * covers run the lighting shader for that light. Compare with chapter 03, where every pixel
  * looped over every light.
  *
- * The G-buffer pass is chapter 01's. The lighting pass is new:
+ * Taken over: the G-buffer pass (common/gbuffer.c, written in chapter 02). New here, in this file:
  *   - the volume is an 80-triangle icosphere. Its vertices lie on the unit sphere, so its flat
  *     faces cut inside it; scaled by 1 / inradius the mesh contains the whole sphere (--scale none
  *     draws it unscaled: the light ends in a polygon instead of a circle);
- *   - all lights go in ONE instanced draw: the vertex shader fetches light gl_InstanceID's position
- *     from the same texture buffer the forward renderer reads, and moves and scales the mesh;
+ *   - all lights go in ONE instanced draw (glDrawElementsInstanced below): the vertex shader
+ *     fetches light gl_InstanceID's position from the same texture buffer the forward renderer
+ *     reads, and moves and scales the mesh (shaders/light_volume.vert, FIXED_RADIUS);
  *   - the fragment shader reads the G-buffer at gl_FragCoord and calls shade_light(), exactly as
- *     forward.frag does;
+ *     forward.frag does, and writes the display-encoded result straight into the 8-bit target
+ *     (shaders/light_volume.frag, OVERWRITE);
  *   - only the back faces are drawn (front faces culled), so each pixel meets each sphere once,
  *     even with the camera inside it; chapter 07 explains this choice and adds a depth test.
  *
  * Two things are still wrong here, on purpose:
  *   - every volume has the same radius (--radius, default 3): some lights are cut off too early
- *     (the hard circles), others shade pixels they cannot reach. Chapter 05 computes each radius.
+ *     (the hard circles), others shade pixels they cannot reach. Chapter 05 solves each radius.
  *   - blending is off: a volume fragment REPLACES the pixel, so where two spheres overlap only the
- *     light drawn last survives (the straight seams between two lights). Chapters 05-06 add them.
+ *     light drawn last survives (the straight seams between two lights). Chapter 06 adds them up.
  * Read docs/04_light_volumes.md alongside.
  */
 #include "app.h"
@@ -25,50 +27,70 @@
 #include "light_volumes.h"
 #include "log.h"
 
+#include <stdlib.h>
+#include <string.h>
+
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const scales[] = {"inradius", "none", NULL};
 
+/* The volumes' fixed-function state: back faces only, no blending, no depth test. */
+static const gl_pass_state volume_pass = {.cull = GL_FRONT};
+
 static struct {
     gbuffer g;
-    light_volumes lv;
-    light_volumes_options options;
+    light_volumes lv; /* the programs (compiled FIXED_RADIUS, OVERWRITE) and the icosphere */
+    float radius;     /* of every volume */
+    bool unscaled;    /* draw the inscribed mesh at radius r: faceted lights */
 } state;
 
 static bool init(app *a)
 {
-    state.options = (light_volumes_options){
-        .overwrite = true,                /* no blending yet: the last light wins */
-        .cull = LIGHT_VOLUMES_CULL_FRONT, /* back faces: one fragment per pixel per light */
-        .depth = LIGHT_VOLUMES_DEPTH_OFF, /* no depth test yet (chapter 07) */
-        .no_depth_clamp = true,
-    };
-    if (!light_volumes_options_set(&state.options, "radius", app_extra(a, "radius")) ||
-        !light_volumes_options_set(&state.options, "scale", app_extra(a, "scale")))
+    state.radius = (float)atof(app_extra(a, "radius"));
+    state.unscaled = strcmp(app_extra(a, "scale"), "none") == 0;
+    if (!(state.radius > 0.0f && state.radius < 1e30f)) {
+        log_error("bad --radius '%s': expected a number > 0", app_extra(a, "radius"));
         return false;
-    return gbuffer_create(&state.g, a->width, a->height) && light_volumes_create(&state.lv, &state.g);
+    }
+    return gbuffer_create(&state.g, a->width, a->height) &&
+           light_volumes_create(&state.lv, "FIXED_RADIUS 1\nOVERWRITE 1");
 }
 
-static bool resize(app *a)
+static bool resize(app *a) { return gbuffer_resize(&state.g, a->width, a->height); }
+
+/* 2b. one instance of the icosphere per light, all in one draw call */
+static void draw_volumes(app *a)
 {
-    return gbuffer_resize(&state.g, a->width, a->height) && light_volumes_resize(&state.lv, &state.g);
+    const gpu_scene *gs = &a->gs;
+    light_volumes_bind(&state.lv, &state.g, gs, LIGHT_VOLUMES_VIEW_LIT);
+    glUniform1f(state.lv.u_fixed_radius, state.radius);
+    glUniform1f(state.lv.u_mesh_scale, state.unscaled ? 1.0f : state.lv.mesh_scale);
+    gl_pass_state_apply(&volume_pass);
+    gl_samples_begin(a->query, a->options->bench);
+    glBindVertexArray(state.lv.sphere.vao);
+    glDrawElementsInstanced(GL_TRIANGLES, state.lv.sphere.index_count, GL_UNSIGNED_INT, NULL, gs->light_count);
+    a->shaded_pixels = gl_samples_end(a->query, a->options->bench);
+    glBindVertexArray(0);
+    gl_pass_state_reset();
 }
 
 static bool frame(app *a)
 {
-    if (app_renderer_is(a, "forward"))
+    if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
 
     /* 1. geometry pass: albedo, normal, material and depth of the visible surface per pixel */
     if (!gbuffer_render(&state.g, &a->gs))
         return false;
 
-    /* 2. lighting pass: ambient everywhere, then one sphere per light, into a->target */
-    state.options.count_pixels = a->options->bench;
+    /* 2. lighting pass, straight into the target: 2a. ambient at every covered pixel */
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
-    if (!light_volumes_render(&state.lv, &state.g, &a->gs, state.options))
-        return false;
-    a->shaded_pixels = light_volumes_shaded_pixels(&state.lv);
-    return true;
+    glViewport(0, 0, a->width, a->height);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    light_volumes_draw_ambient(&state.lv, &state.g, &a->gs);
+    if (a->gs.light_count > 0)
+        draw_volumes(a);
+    return gl_check("04 frame");
 }
 
 static bool key(app *a, int k)
@@ -76,9 +98,8 @@ static bool key(app *a, int k)
     (void)a;
     if (k != 'S')
         return false;
-    state.options.unscaled_mesh = !state.options.unscaled_mesh;
-    log_info("volume mesh: %s",
-             state.options.unscaled_mesh ? "unscaled (inscribed)" : "scaled by 1 / inradius");
+    state.unscaled = !state.unscaled;
+    log_info("volume mesh: %s", state.unscaled ? "unscaled (inscribed)" : "scaled by 1 / inradius");
     return true;
 }
 

@@ -1,23 +1,27 @@
 /* 05_attenuation_radius.c - each light volume gets its own radius: the distance where the light's
  * attenuated brightness falls to the cut-off. Compare with chapter 04 (one fixed radius for all).
  *
- * A point light's brightness at distance d is peak / (kc + kl d + kq d^2), peak its brightest
- * colour channel times its intensity. Past the distance where that drops below the cut-off
- * (default 5/256, about the smallest step an 8-bit display shows) the light is treated as zero,
- * so the volume can stop there. common/light.c solves kq r^2 + kl r + kc - peak / cutoff = 0 with
- * the cancellation-free root 2c / (kl + sqrt(kl^2 + 4 kq c)), c = peak / cutoff - kc, which also
- * covers kq = 0 (linear only), kl = kq = 0 (never falls: infinite radius, drawn full-screen) and
- * peak / kc <= cutoff (never reaches it: the light is culled). gpu_scene_update stores the radius
- * beside each light; the volume's vertex shader scales the mesh by it.
+ * Taken over: the G-buffer pass (02), the volume mesh, programs and instanced draw (04, now
+ * common/light_volumes.c). New here:
+ *   - the radius. A point light's brightness at distance d is peak / (kc + kl d + kq d^2), peak its
+ *     brightest colour channel times its intensity. Past the distance where that drops below the
+ *     cut-off (default 5/256, about the smallest step an 8-bit display shows) the light is treated
+ *     as zero, so the volume can stop there. light_radius() (common/light.c) solves
+ *     kq r^2 + kl r + kc - peak / cutoff = 0 with the cancellation-free root
+ *     2c / (kl + sqrt(kl^2 + 4 kq c)), c = peak / cutoff - kc; gpu_scene_update() calls it for
+ *     every light (the forward renderer cuts its lights off at the same radius) and uploads it
+ *     beside the light, where the volume shader now reads it instead of a fixed radius;
+ *   - the two cases a radius brings: a light that never falls to the cut-off (kl = kq = 0) has an
+ *     infinite radius, and a sphere that contains the whole view covers every pixel anyway: both
+ *     are drawn as full-screen triangles (light_volumes_sort, light_volumes_draw); a light that
+ *     never reaches it (peak / kc <= cut-off) is culled and not drawn at all.
  *
  * The cut is a real discontinuity: a surface just inside the sphere gets up to `cutoff` of light,
  * just outside it gets none. On a dark surface that is a visible ring; --view ring draws it, and
  * --cutoff (or the [ ] keys) moves it: a larger cut-off, smaller volumes, faster, a brighter ring.
  *
- * Chapter 04 drew without blending, so the last light won. Here the volumes are ADDED into a
- * floating-point buffer (glBlendFunc(GL_ONE, GL_ONE)), ambient first, and one present pass
- * display-encodes the sum: the picture now matches chapter 00 (tests/chapters_04_07.cmake).
- * Chapter 06 explains why that buffer must be floating-point. Read docs/05_attenuation_radius.md.
+ * Still wrong on purpose: no blending, so where two volumes overlap the light drawn last wins,
+ * now along the true radii. Chapter 06 adds the lights up. Read docs/05_attenuation_radius.md.
  */
 #include "app.h"
 #include "gbuffer.h"
@@ -27,22 +31,22 @@
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const views[] = {"lit", "ring", NULL};
 
+/* The volumes' fixed-function state, as in chapter 04: back faces only, no blending, no depth test. */
+static const gl_pass_state volume_pass = {.cull = GL_FRONT};
+
 static struct {
     gbuffer g;
-    light_volumes lv;
+    light_volumes lv;     /* compiled OVERWRITE: each fragment writes its pixel */
     double logged_cutoff; /* radii are logged (with --verbose) when the cut-off changes */
 } state;
 
 static bool init(app *a)
 {
     state.logged_cutoff = -1.0;
-    return gbuffer_create(&state.g, a->width, a->height) && light_volumes_create(&state.lv, &state.g);
+    return gbuffer_create(&state.g, a->width, a->height) && light_volumes_create(&state.lv, "OVERWRITE 1");
 }
 
-static bool resize(app *a)
-{
-    return gbuffer_resize(&state.g, a->width, a->height) && light_volumes_resize(&state.lv, &state.g);
-}
+static bool resize(app *a) { return gbuffer_resize(&state.g, a->width, a->height); }
 
 /* The solved radii, to compare with the ring on screen. */
 static void log_radii(const app *a)
@@ -60,7 +64,7 @@ static void log_radii(const app *a)
 
 static bool frame(app *a)
 {
-    if (app_renderer_is(a, "forward"))
+    if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
     if (a->cutoff != state.logged_cutoff)
         log_radii(a);
@@ -69,19 +73,21 @@ static bool frame(app *a)
     if (!gbuffer_render(&state.g, &a->gs))
         return false;
 
-    /* 2. lighting pass: volumes sized by the solved radius, added up, then display-encoded */
-    const light_volumes_options options = {
-        .cull = LIGHT_VOLUMES_CULL_FRONT, /* back faces, as in chapter 04 */
-        .depth = LIGHT_VOLUMES_DEPTH_OFF, /* still no depth test (chapter 07) */
-        .no_depth_clamp = true,
-        .view = app_view_is(a, "ring") ? LIGHT_VOLUMES_VIEW_RING : LIGHT_VOLUMES_VIEW_LIT,
-        .count_pixels = a->options->bench,
-    };
+    /* 2. lighting pass, straight into the target: ambient, then every volume at its own radius
+     * (finite volumes in one instanced draw, then the full-screen ones) */
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
-    if (!light_volumes_render(&state.lv, &state.g, &a->gs, options))
+    glViewport(0, 0, a->width, a->height);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    light_volumes_draw_ambient(&state.lv, &state.g, &a->gs);
+    if (!light_volumes_sort(&state.lv, &a->gs))
         return false;
-    a->shaded_pixels = light_volumes_shaded_pixels(&state.lv);
-    return true;
+    light_volumes_bind(&state.lv, &state.g, &a->gs,
+                       app_view_is(a, "ring") ? LIGHT_VOLUMES_VIEW_RING : LIGHT_VOLUMES_VIEW_LIT);
+    gl_samples_begin(a->query, a->options->bench);
+    light_volumes_draw(&state.lv, &a->gs, &volume_pass);
+    a->shaded_pixels = gl_samples_end(a->query, a->options->bench);
+    return gl_check("05 frame");
 }
 
 static void cleanup(app *a)

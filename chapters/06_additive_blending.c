@@ -1,10 +1,15 @@
 /* 06_additive_blending.c - the lights are summed in a floating-point buffer and only the total is
- * turned into display values. Compare with chapter 05, which did this without saying why.
+ * turned into display values. Compare with chapter 05, where the light drawn last replaced the
+ * others wherever two volumes overlapped.
  *
- * Light adds up: the radiance at a pixel is ambient + the sum of every light's shade_light().
- * Each volume fragment adds its light with glBlendFunc(GL_ONE, GL_ONE) into an accumulation
- * buffer; one full-screen present pass then applies the display transform (tone map, then the
- * sRGB encoding of display_encode()) to the SUM, as forward.frag does at the end of its loop.
+ * Taken over: the G-buffer pass (02), the volumes from 04, each light's radius from 05 (all in
+ * common/light_volumes.c). New here (common/deferred_volumes.c from this chapter on):
+ *   - light adds up: the radiance at a pixel is ambient + the sum of every light's shade_light().
+ *     Each volume fragment adds its light with glBlendFunc(GL_ONE, GL_ONE) (the pass state below)
+ *     into an accumulation buffer, after one full-screen pass has written the ambient term;
+ *   - one full-screen present pass then applies the display transform (tone map, then the sRGB
+ *     encoding of display_encode()) to the SUM, as forward.frag does at the end of its loop. This
+ *     is the first volume chapter whose picture matches chapter 00's.
  *
  * The buffer's format matters:
  *   rgba16f  half floats: 11 bits of precision at any magnitude, values above 1 kept. The sum of
@@ -13,6 +18,7 @@
  *            the colour saturates to a washed-out white that no later pass can undo; and linear
  *            values in 8 bits leave visible steps in the dark (the sRGB curve spends 13x more
  *            codes there).
+ *   rgba32f  full floats: twice the memory and bandwidth of rgba16f, for the last 1/255.
  * With values above 1 kept, the present pass can tone map instead of clipping:
  *   none      clamp to [0, 1]: the forward renderer's transform (the default, checked against it)
  *   exposure  multiply by --exposure first (darker or brighter), then clamp
@@ -20,42 +26,45 @@
  * Read docs/06_additive_blending.md alongside.
  */
 #include "app.h"
+#include "deferred_volumes.h"
 #include "gbuffer.h"
-#include "light_volumes.h"
 #include "log.h"
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
-static const char *const accum_formats[] = {"rgba16f", "rgba8", "rgba32f", NULL};
+static const char *const accum_names[] = {"rgba16f", "rgba8", "rgba32f", NULL};
+static const GLenum accum_formats[] = {GL_RGBA16F, GL_RGBA8, GL_RGBA32F};
 static const char *const tonemaps[] = {"none", "exposure", "reinhard", NULL};
+
+/* The volumes' fixed-function state: back faces only as before, and now every fragment is ADDED
+ * to what the buffer holds (source * 1 + destination * 1). */
+static const gl_pass_state volume_pass = {.blend = {GL_ONE, GL_ONE}, .cull = GL_FRONT};
 
 static struct {
     gbuffer g;
-    light_volumes lv;
-    light_volumes_options options;
+    deferred_volumes dv; /* the volumes, the accumulation buffer, the present pass */
+    int accum;           /* index into accum_formats */
+    deferred_volumes_tonemap tonemap;
+    double exposure;
 } state;
 
 static bool init(app *a)
 {
-    state.options = (light_volumes_options){
-        .cull = LIGHT_VOLUMES_CULL_FRONT, /* back faces, as in chapters 04-05 */
-        .depth = LIGHT_VOLUMES_DEPTH_OFF, /* no depth test yet (chapter 07) */
-        .no_depth_clamp = true,
-    };
-    if (!light_volumes_options_set(&state.options, "accum", app_extra(a, "accum")) ||
-        !light_volumes_options_set(&state.options, "tonemap", app_extra(a, "tonemap")) ||
-        !light_volumes_options_set(&state.options, "exposure", app_extra(a, "exposure")))
+    state.accum = cli_choice_index(accum_names, app_extra(a, "accum"));
+    state.tonemap = (deferred_volumes_tonemap)cli_choice_index(tonemaps, app_extra(a, "tonemap"));
+    if (!app_extra_number(a, "exposure", 1e-6, 1e6, &state.exposure))
         return false;
-    return gbuffer_create(&state.g, a->width, a->height) && light_volumes_create(&state.lv, &state.g);
+    return gbuffer_create(&state.g, a->width, a->height) &&
+           deferred_volumes_create(&state.dv, &state.g, accum_formats[state.accum]);
 }
 
 static bool resize(app *a)
 {
-    return gbuffer_resize(&state.g, a->width, a->height) && light_volumes_resize(&state.lv, &state.g);
+    return gbuffer_resize(&state.g, a->width, a->height) && deferred_volumes_resize(&state.dv, &state.g);
 }
 
 static bool frame(app *a)
 {
-    if (app_renderer_is(a, "forward"))
+    if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
 
     /* 1. geometry pass */
@@ -63,28 +72,32 @@ static bool frame(app *a)
         return false;
 
     /* 2. lighting pass: ambient, then += each light (blend ONE, ONE) in the accumulation buffer;
-     * 3. present: tone map and display-encode the sum into a->target */
-    state.options.count_pixels = a->options->bench;
-    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
-    if (!light_volumes_render(&state.lv, &state.g, &a->gs, state.options))
+     * 3. present: tone map and display-encode the sum into the target */
+    const deferred_volumes_frame f = {
+        .volume_state = &volume_pass,
+        .accum_format = accum_formats[state.accum],
+        .tonemap = state.tonemap,
+        .exposure = (float)state.exposure,
+        .count_pixels = a->options->bench,
+    };
+    if (!deferred_volumes_render(&state.dv, &state.g, &a->gs, a->target.id, &f))
         return false;
-    a->shaded_pixels = light_volumes_shaded_pixels(&state.lv);
+    a->shaded_pixels = deferred_volumes_shaded_pixels(&state.dv);
     return true;
 }
 
 static bool key(app *a, int k)
 {
     (void)a;
-    light_volumes_options *o = &state.options;
     if (k == 'A') {
-        o->accum_format = o->accum_format == GL_RGBA8 ? GL_RGBA16F : GL_RGBA8;
-        log_info("accumulation buffer: %s", o->accum_format == GL_RGBA8 ? "rgba8" : "rgba16f");
+        state.accum = accum_names[state.accum + 1] ? state.accum + 1 : 0;
+        log_info("accumulation buffer: %s", accum_names[state.accum]);
     } else if (k == 'T') {
-        o->tonemap = (light_volumes_tonemap)((o->tonemap + 1) % 3);
-        log_info("tone map: %s", tonemaps[o->tonemap]);
+        state.tonemap = (deferred_volumes_tonemap)((state.tonemap + 1) % 3);
+        log_info("tone map: %s", tonemaps[state.tonemap]);
     } else if (k == '-' || k == '=') {
-        o->exposure = (o->exposure > 0.0f ? o->exposure : 1.0f) * (k == '-' ? 0.5f : 2.0f);
-        log_info("exposure: %g (used by the exposure and reinhard tone maps)", o->exposure);
+        state.exposure *= k == '-' ? 0.5 : 2.0;
+        log_info("exposure: %g (used by the exposure and reinhard tone maps)", state.exposure);
     } else {
         return false;
     }
@@ -94,7 +107,7 @@ static bool key(app *a, int k)
 static void cleanup(app *a)
 {
     (void)a;
-    light_volumes_destroy(&state.lv);
+    deferred_volumes_destroy(&state.dv);
     gbuffer_destroy(&state.g);
 }
 
@@ -108,12 +121,12 @@ int main(int argc, char **argv)
                            "tone mapped once.",
                 .renderers = renderers,
                 .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-                        "  A        accumulation buffer: rgba16f or rgba8 (saturates)\n"
+                        "  A        accumulation buffer: rgba16f, rgba8 (saturates), rgba32f\n"
                         "  T        tone map: none, exposure, reinhard\n"
                         "  - =      halve / double the exposure\n",
                 .extras =
                     {
-                        {"accum", "FORMAT", "accumulation buffer format", accum_formats, "rgba16f"},
+                        {"accum", "FORMAT", "accumulation buffer format", accum_names, "rgba16f"},
                         {"tonemap", "OP", "display transform of the sum", tonemaps, "none"},
                         {"exposure", "E", "scale before the exposure / reinhard tone maps", NULL, "1"},
                     },

@@ -2,6 +2,10 @@
  * the pixels whose surface lies inside its sphere. Compare with chapter 06, which shaded every
  * pixel a sphere covers on screen, in front of it or behind it.
  *
+ * Taken over: the G-buffer pass (02), the volumes from 04, the radius from 05, the additive
+ * blending into a float buffer and the present pass from 06 (common/deferred_volumes.c). New here:
+ * the volume pass's depth state, one literal (volume_pass below).
+ *
  * A sphere's pixels come in two layers: its front faces (nearer half) and its back faces. Which
  * layer to draw, and which depth test to pair with it:
  *   front faces culled, back faces drawn, depth test GL_GREATER against the scene's depth with
@@ -19,52 +23,76 @@
  * prints them as shaded_pixels. Read docs/07_face_culling.md alongside.
  */
 #include "app.h"
+#include "deferred_volumes.h"
 #include "gbuffer.h"
-#include "light_volumes.h"
 #include "log.h"
+
+#include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const views[] = {"lit", "overdraw", NULL};
 static const char *const culls[] = {"front", "back", "none", NULL};
 static const char *const on_off[] = {"on", "off", NULL};
 
+/* The volumes' fixed-function state: added up as in chapter 06; back faces, kept only where they
+ * lie behind the scene's surface; the scene's depth is read, never written; no far-plane clipping. */
+static const gl_pass_state volume_pass = {
+    .blend = {GL_ONE, GL_ONE},
+    .cull = GL_FRONT,
+    .depth_func = GL_GREATER,
+    .depth_write = false,
+    .depth_clamp = true,
+};
+
+/* The two wrong pairings of faces and depth test, for --cull back and --cull none. */
+static const gl_pass_state front_faces_pass = {.blend = {GL_ONE, GL_ONE}, .cull = GL_BACK, .depth_func = GL_LEQUAL};
+static const gl_pass_state both_faces_pass = {.blend = {GL_ONE, GL_ONE}};
+
 static struct {
     gbuffer g;
-    light_volumes lv;
-    light_volumes_options options;
+    deferred_volumes dv;
+    gl_pass_state pass; /* volume_pass, or one of the wrong ones */
+    int cull;           /* index into culls */
 } state;
+
+static void set_cull(int cull, bool depth_clamp)
+{
+    static const gl_pass_state *const passes[] = {&volume_pass, &front_faces_pass, &both_faces_pass};
+    state.cull = cull;
+    state.pass = *passes[cull];
+    state.pass.depth_clamp = depth_clamp;
+}
 
 static bool init(app *a)
 {
-    /* Zeroed options are this chapter's configuration; the command line may pick a broken one. */
-    state.options = (light_volumes_options){0};
-    if (!light_volumes_options_set(&state.options, "cull", app_extra(a, "cull")) ||
-        !light_volumes_options_set(&state.options, "depth-clamp", app_extra(a, "depth-clamp")))
-        return false;
-    return gbuffer_create(&state.g, a->width, a->height) && light_volumes_create(&state.lv, &state.g);
+    set_cull(cli_choice_index(culls, app_extra(a, "cull")), strcmp(app_extra(a, "depth-clamp"), "on") == 0);
+    return gbuffer_create(&state.g, a->width, a->height) &&
+           deferred_volumes_create(&state.dv, &state.g, GL_RGBA16F);
 }
 
 static bool resize(app *a)
 {
-    return gbuffer_resize(&state.g, a->width, a->height) && light_volumes_resize(&state.lv, &state.g);
+    return gbuffer_resize(&state.g, a->width, a->height) && deferred_volumes_resize(&state.dv, &state.g);
 }
 
 static bool frame(app *a)
 {
-    if (app_renderer_is(a, "forward"))
+    if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
 
     /* 1. geometry pass: also the depth the volumes are tested against */
     if (!gbuffer_render(&state.g, &a->gs))
         return false;
 
-    /* 2. lighting pass: back faces, GL_GREATER, depth writes off, depth clamp; 3. present */
-    state.options.view = app_view_is(a, "overdraw") ? LIGHT_VOLUMES_VIEW_OVERDRAW : LIGHT_VOLUMES_VIEW_LIT;
-    state.options.count_pixels = a->options->bench;
-    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
-    if (!light_volumes_render(&state.lv, &state.g, &a->gs, state.options))
+    /* 2. lighting pass with the depth-tested volumes; 3. present */
+    const deferred_volumes_frame f = {
+        .volume_state = &state.pass,
+        .view = app_view_is(a, "overdraw") ? LIGHT_VOLUMES_VIEW_OVERDRAW : LIGHT_VOLUMES_VIEW_LIT,
+        .count_pixels = a->options->bench,
+    };
+    if (!deferred_volumes_render(&state.dv, &state.g, &a->gs, a->target.id, &f))
         return false;
-    a->shaded_pixels = light_volumes_shaded_pixels(&state.lv);
+    a->shaded_pixels = deferred_volumes_shaded_pixels(&state.dv);
     return true;
 }
 
@@ -72,12 +100,11 @@ static bool key(app *a, int k)
 {
     (void)a;
     if (k == 'C') {
-        const char *next = culls[(state.options.cull + 1) % 3];
-        light_volumes_options_set(&state.options, "cull", next);
-        log_info("cull %s", next);
+        set_cull((state.cull + 1) % 3, state.pass.depth_clamp);
+        log_info("cull %s", culls[state.cull]);
     } else if (k == 'D') {
-        state.options.no_depth_clamp = !state.options.no_depth_clamp;
-        log_info("depth clamp %s", state.options.no_depth_clamp ? "off" : "on");
+        state.pass.depth_clamp = !state.pass.depth_clamp;
+        log_info("depth clamp %s", state.pass.depth_clamp ? "on" : "off");
     } else {
         return false;
     }
@@ -87,7 +114,7 @@ static bool key(app *a, int k)
 static void cleanup(app *a)
 {
     (void)a;
-    light_volumes_destroy(&state.lv);
+    deferred_volumes_destroy(&state.dv);
     gbuffer_destroy(&state.g);
 }
 

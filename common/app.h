@@ -3,23 +3,26 @@
  *   app_run(desc, argc, argv)   parse the command line, load the scene, make the context,
  *                               loop frames (window or headless), time them (--bench), write the
  *                               screenshot; returns the process exit code
- *   app_render_forward(a)       chapter 00's renderer with the best forward options, into a->target
- *   app_forward_options(name)   options for "forward", "forward-naive", "forward-prepass", "forward-lists"
+ *   app_render_forward(a)       the forward renderer selected by --renderer or R (one of
+ *                               renderer_table's forward names; "forward" otherwise) into a->target
  *   app_renderer_is(a, name)    the renderer currently selected (--renderer, or the R key)
  *   app_view_is(a, name)        the view currently selected (--view, or the V key)
  *   app_extra(a, name)          the value of a chapter's own option
+ *   app_extra_number(a, name, lo, hi, out)
+ *                               that value as a number in [lo, hi]; logs and returns false if not
  *
- * A chapter fills an app_desc: its command-line description and four callbacks. Its frame
+ * A chapter fills an app_desc: its command-line description and five callbacks. Its frame
  * callback draws the final, display-encoded picture into a->target (RGBA8 colour + 32-bit float
- * depth), which the runner shows in the window or saves with --screenshot.
+ * depth), which the runner shows in the window or saves with --screenshot. With --bench it may
+ * count its lighting pass's fragments with a->query (gl_samples_begin/end) into a->shaded_pixels.
  */
 #ifndef COMMON_APP_H
 #define COMMON_APP_H
 
 #include "cli.h"
 #include "fbo.h"
-#include "forward.h"
 #include "gpu_scene.h"
+#include "renderers.h"
 #include "scene.h"
 
 typedef struct app {
@@ -27,7 +30,7 @@ typedef struct app {
     const cli_desc *cli;
     scene scene;
     gpu_scene gs;
-    forward fwd;
+    renderer_set renderers; /* the forward renderers every chapter can switch to */
     fbo target;
     int width, height;
     int renderer; /* index into cli.renderers */
@@ -35,9 +38,8 @@ typedef struct app {
     float time;
     double cutoff;
     long frame_index;
-    double frame_ms;    /* last frame, CPU + glFinish when timing */
-    long shaded_pixels; /* a chapter may report its lighting pass's GL_SAMPLES_PASSED here; -1 if not */
-    void *user;
+    GLuint query;       /* a GL_SAMPLES_PASSED query for the chapter's lighting pass */
+    long shaded_pixels; /* what the chapter counted with it in the last frame; -1 if not */
 } app;
 
 typedef struct app_desc {
@@ -51,9 +53,9 @@ typedef struct app_desc {
 
 int app_run(const app_desc *desc, int argc, char **argv);
 bool app_render_forward(app *a);
-forward_options app_forward_options(const char *name);
 bool app_renderer_is(const app *a, const char *name);
 bool app_view_is(const app *a, const char *name);
 const char *app_extra(const app *a, const char *name);
+bool app_extra_number(const app *a, const char *name, double lo, double hi, double *out);
 
 #endif

@@ -96,7 +96,7 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
     fprintf(stream, "\nexit codes: 0 ok, 1 runtime failure, 2 usage or input error, 77 no GL context\n");
 }
 
-static bool parse_int(const char *s, long lo, long hi, int *out)
+bool cli_parse_int(const char *s, long lo, long hi, int *out)
 {
     char *end;
     errno = 0;
@@ -107,7 +107,7 @@ static bool parse_int(const char *s, long lo, long hi, int *out)
     return true;
 }
 
-static bool parse_double(const char *s, double lo, double hi, double *out)
+bool cli_parse_double(const char *s, double lo, double hi, double *out)
 {
     char *end;
     errno = 0;
@@ -126,7 +126,7 @@ static bool parse_size(const char *s, int *w, int *h)
         return false;
     memcpy(buf, s, (size_t)(x - s));
     buf[x - s] = '\0';
-    return parse_int(buf, 1, CLI_MAX_SIZE, w) && parse_int(x + 1, 1, CLI_MAX_SIZE, h);
+    return cli_parse_int(buf, 1, CLI_MAX_SIZE, w) && cli_parse_int(x + 1, 1, CLI_MAX_SIZE, h);
 }
 
 static int usage_error(const cli_desc *desc, const char *fmt, const char *arg)
@@ -212,10 +212,10 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
             if (!parse_size(v, &out->width, &out->height))
                 return usage_error(desc, "bad --size '%s': expected WxH, each 1..65536", v);
         } else if (is_option(a, "--frames")) {
-            if (!(v = option_value(argc, argv, &i, "--frames")) || !parse_int(v, 1, INT_MAX, &out->frames))
+            if (!(v = option_value(argc, argv, &i, "--frames")) || !cli_parse_int(v, 1, INT_MAX, &out->frames))
                 return usage_error(desc, "bad --frames '%s': expected a whole number >= 1", v ? v : "");
         } else if (is_option(a, "--warmup")) {
-            if (!(v = option_value(argc, argv, &i, "--warmup")) || !parse_int(v, 0, 100000, &out->warmup))
+            if (!(v = option_value(argc, argv, &i, "--warmup")) || !cli_parse_int(v, 0, 100000, &out->warmup))
                 return usage_error(desc, "bad --warmup '%s': expected a whole number >= 0", v ? v : "");
         } else if (is_option(a, "--screenshot")) {
             if (!(v = option_value(argc, argv, &i, "--screenshot")) || !*v)
@@ -238,28 +238,28 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
                 return usage_error(desc, "unknown view '%s'", v ? v : "");
             out->view = v;
         } else if (is_option(a, "--lights")) {
-            if (!(v = option_value(argc, argv, &i, "--lights")) || !parse_int(v, 0, 1000000, &out->lights))
+            if (!(v = option_value(argc, argv, &i, "--lights")) || !cli_parse_int(v, 0, 1000000, &out->lights))
                 return usage_error(desc, "bad --lights '%s': expected 0..1000000", v ? v : "");
         } else if (is_option(a, "--seed")) {
             int seed;
-            if (!(v = option_value(argc, argv, &i, "--seed")) || !parse_int(v, 0, INT_MAX, &seed))
+            if (!(v = option_value(argc, argv, &i, "--seed")) || !cli_parse_int(v, 0, INT_MAX, &seed))
                 return usage_error(desc, "bad --seed '%s': expected a whole number >= 0", v ? v : "");
             out->seed = (uint32_t)seed;
         } else if (is_option(a, "--time")) {
             double t;
-            if (!(v = option_value(argc, argv, &i, "--time")) || !parse_double(v, -1e6, 1e6, &t))
+            if (!(v = option_value(argc, argv, &i, "--time")) || !cli_parse_double(v, -1e6, 1e6, &t))
                 return usage_error(desc, "bad --time '%s': expected seconds", v ? v : "");
             out->time = (float)t;
         } else if (is_option(a, "--resize-cycle")) {
             if (!(v = option_value(argc, argv, &i, "--resize-cycle")) ||
-                !parse_int(v, 0, 100000, &out->resize_cycle))
+                !cli_parse_int(v, 0, 100000, &out->resize_cycle))
                 return usage_error(desc, "bad --resize-cycle '%s': expected 0..100000", v ? v : "");
         } else if (is_option(a, "--minimise-cycle")) {
             if (!(v = option_value(argc, argv, &i, "--minimise-cycle")) ||
-                !parse_int(v, 0, 1000, &out->minimise_cycle))
+                !cli_parse_int(v, 0, 1000, &out->minimise_cycle))
                 return usage_error(desc, "bad --minimise-cycle '%s': expected 0..1000", v ? v : "");
         } else if (is_option(a, "--cutoff")) {
-            if (!(v = option_value(argc, argv, &i, "--cutoff")) || !parse_double(v, 0.0, 1e6, &out->cutoff))
+            if (!(v = option_value(argc, argv, &i, "--cutoff")) || !cli_parse_double(v, 0.0, 1e6, &out->cutoff))
                 return usage_error(desc, "bad --cutoff '%s': expected a number >= 0", v ? v : "");
         } else if (strncmp(a, "--", 2) == 0) {
             int k = 0;

@@ -2,6 +2,9 @@
  *
  *   cli_parse(argc, argv, desc, options)   fill options; CLI_EXIT_* tells the caller what to do
  *   cli_print_help(desc, stream)           the --help text
+ *   cli_parse_int(text, lo, hi, out)       the whole of `text` as an integer in [lo, hi]
+ *   cli_parse_double(text, lo, hi, out)    the whole of `text` as a finite number in [lo, hi]
+ *                                          (both false, without a message, when it is not)
  *
  * A chapter describes what it adds (renderers, views, extra options) in a
  * cli_desc; the parser knows the rest. Values are validated here, so the
@@ -77,5 +80,7 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out);
 void cli_print_help(const cli_desc *desc, FILE *stream);
 const char *cli_extra_value(const cli_desc *desc, const cli_options *options, const char *name);
 int cli_choice_index(const char *const *choices, const char *value);
+bool cli_parse_int(const char *text, long lo, long hi, int *out);
+bool cli_parse_double(const char *text, double lo, double hi, double *out);
 
 #endif

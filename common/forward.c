@@ -19,6 +19,7 @@ bool forward_create(forward *f)
     f->list_buffer = gl_buffer_create();
     f->list_texture = gl_texture_create();
     f->query = gl_query_create();
+    f->shaded_pixels = -1;
     return gl_check("forward_create");
 }
 
@@ -53,7 +54,7 @@ static bool list_reserve(forward *f, size_t n)
 
 /* Per object, the lights whose sphere of influence touches the object's bounding sphere.
  * Layout: (first, count) for each object, then the indices; forward.frag reads it the same way. */
-static bool build_light_lists(forward *f, const gpu_scene *gs)
+bool forward_build_light_lists(forward *f, const gpu_scene *gs)
 {
     int objects = gs->src->object_count;
     size_t n = 2 * (size_t)objects;
@@ -64,9 +65,8 @@ static bool build_light_lists(forward *f, const gpu_scene *gs)
         size_t first = n;
         for (int k = 0; k < gs->light_count; k++) {
             const gpu_light *l = &gs->lights[k];
-            float dx = l->position[0] - b[0], dy = l->position[1] - b[1], dz = l->position[2] - b[2];
             float reach = l->radius + b[3];
-            if (dx * dx + dy * dy + dz * dz > reach * reach)
+            if (glm_vec3_distance2((float *)l->position, (float *)b) > reach * reach)
                 continue;
             if (!list_reserve(f, n + 1))
                 return false;
@@ -76,73 +76,66 @@ static bool build_light_lists(forward *f, const gpu_scene *gs)
         f->list[2 * i + 1] = (int)(n - first);
     }
     f->list_entries = (long)(n - 2 * (size_t)objects);
-    glBindBuffer(GL_TEXTURE_BUFFER, f->list_buffer);
-    glBufferData(GL_TEXTURE_BUFFER, (GLsizeiptr)((n ? n : 1) * sizeof(int)), f->list, GL_STREAM_DRAW);
-    glBindTexture(GL_TEXTURE_BUFFER, f->list_texture);
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_R32I, f->list_buffer);
-    glBindTexture(GL_TEXTURE_BUFFER, 0);
-    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    gl_texture_buffer_upload(f->list_buffer, f->list_texture, GL_R32I, f->list, (n ? n : 1) * sizeof(int));
     return true;
 }
 
-/* The linear program is built on first use: only the benchmark and the tests ask for it. */
-static bool load_linear_program(forward *f)
+void forward_draw_depth(const forward *f, const gpu_scene *gs)
 {
-    if (!f->linear_program)
+    glUseProgram(f->depth_program);
+    gpu_scene_bind_objects(gs, f->depth_program, FORWARD_UNIT_OBJECTS);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gpu_scene_draw(gs, f->depth_program);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+/* The linear program is built on first use: only the benchmark and the tests ask for it. */
+static GLuint shading_program(forward *f, bool linear)
+{
+    if (linear && !f->linear_program)
         f->linear_program = gl_program_load("forward.vert", "forward.frag", "OUTPUT_LINEAR 1");
-    return f->linear_program != 0;
+    return linear ? f->linear_program : f->program;
+}
+
+bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options)
+{
+    GLuint program = shading_program(f, options.linear_output);
+    if (!program)
+        return false;
+    glUseProgram(program);
+    gpu_scene_bind_lights(gs, program, FORWARD_UNIT_LIGHTS);
+    gpu_scene_bind_objects(gs, program, FORWARD_UNIT_OBJECTS);
+    glActiveTexture(GL_TEXTURE0 + FORWARD_UNIT_LISTS);
+    glBindTexture(GL_TEXTURE_BUFFER, f->list_texture);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(glGetUniformLocation(program, "u_light_list"), FORWARD_UNIT_LISTS);
+    glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);
+    glUniform1i(glGetUniformLocation(program, "u_use_list"), options.light_lists);
+    gl_samples_begin(f->query, options.count_pixels);
+    gpu_scene_draw(gs, program);
+    f->shaded_pixels = gl_samples_end(f->query, options.count_pixels);
+    return true;
 }
 
 bool forward_render(forward *f, const gpu_scene *gs, forward_options options)
 {
-    if (options.light_lists && !build_light_lists(f, gs))
+    if (options.light_lists && !forward_build_light_lists(f, gs))
         return false;
-    if (options.linear_output && !load_linear_program(f))
-        return false;
-    GLuint program = options.linear_output ? f->linear_program : f->program;
-
     glViewport(0, 0, gs->view.width, gs->view.height);
     glClearColor(0, 0, 0, 1);
-    glDepthMask(GL_TRUE);
+    gl_pass_state_reset();
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE); /* planes are single-sided */
-    glCullFace(GL_BACK);
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LEQUAL);
-
+    /* LEQUAL everywhere (the depth-tie rule in forward.h); after a pre-pass, EQUAL without writes */
+    gl_pass_state depth = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
+    gl_pass_state_apply(&depth);
     if (options.prepass) {
-        glUseProgram(f->depth_program);
-        gpu_scene_bind_objects(gs, f->depth_program, 2);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        gpu_scene_draw(gs, f->depth_program);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glDepthFunc(GL_EQUAL);
-        glDepthMask(GL_FALSE);
+        forward_draw_depth(f, gs);
+        depth.depth_func = GL_EQUAL, depth.depth_write = false;
+        gl_pass_state_apply(&depth);
     }
-
-    glUseProgram(program);
-    gpu_scene_bind_lights(gs, program, 0);
-    gpu_scene_bind_objects(gs, program, 2);
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_BUFFER, f->list_texture);
-    glActiveTexture(GL_TEXTURE0);
-    glUniform1i(glGetUniformLocation(program, "u_light_list"), 1);
-    glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);
-    glUniform1i(glGetUniformLocation(program, "u_use_list"), options.light_lists);
-    if (options.count_pixels)
-        glBeginQuery(GL_SAMPLES_PASSED, f->query);
-    gpu_scene_draw(gs, program);
-    if (options.count_pixels) {
-        glEndQuery(GL_SAMPLES_PASSED);
-        GLuint samples = 0;
-        glGetQueryObjectuiv(f->query, GL_QUERY_RESULT, &samples);
-        f->shaded_pixels = (long)samples;
-    }
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    return true;
+    bool ok = forward_draw_shaded(f, gs, options);
+    gl_pass_state_reset();
+    return ok;
 }
 
 long forward_shaded_pixels(const forward *f) { return f->shaded_pixels; }

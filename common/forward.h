@@ -2,7 +2,12 @@
  *
  *   forward_create(f)                       compile the shaders
  *   forward_destroy(f)
- *   forward_render(f, gs, options)          draw gs into the bound framebuffer (cleared here)
+ *   forward_render(f, gs, options)          draw gs into the bound framebuffer (cleared here):
+ *                                           the three passes below with the state they need
+ *   forward_build_light_lists(f, gs)        per object, the lights that reach it, uploaded
+ *   forward_draw_depth(f, gs)               every object into the depth buffer only
+ *   forward_draw_shaded(f, gs, options)     every object shaded (lists when options.light_lists),
+ *                                           with whatever depth state the caller set
  *   forward_shaded_pixels(f)                fragments that passed the depth test in the last
  *                                           shading pass (GL_SAMPLES_PASSED), when counting is on
  *
@@ -21,6 +26,9 @@
 #define COMMON_FORWARD_H
 
 #include "gpu_scene.h"
+
+/* Texture units of the forward passes. */
+enum { FORWARD_UNIT_LIGHTS = 0, FORWARD_UNIT_LISTS = 1, FORWARD_UNIT_OBJECTS = 2 };
 
 typedef struct forward_options {
     bool prepass;
@@ -42,6 +50,9 @@ typedef struct forward {
 bool forward_create(forward *f);
 void forward_destroy(forward *f);
 bool forward_render(forward *f, const gpu_scene *gs, forward_options options);
+bool forward_build_light_lists(forward *f, const gpu_scene *gs);
+void forward_draw_depth(const forward *f, const gpu_scene *gs);
+bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options);
 long forward_shaded_pixels(const forward *f);
 
 #endif

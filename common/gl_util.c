@@ -334,4 +334,64 @@ void gl_draw_fullscreen(void)
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void gl_pass_state_apply(const gl_pass_state *s)
+{
+    if (s->blend[0] || s->blend[1]) {
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(s->blend[0], s->blend[1]);
+    } else {
+        glDisable(GL_BLEND);
+    }
+    if (s->cull) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(s->cull);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+    if (s->depth_func) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(s->depth_func);
+    } else {
+        glDisable(GL_DEPTH_TEST);
+    }
+    glDepthMask(s->depth_write ? GL_TRUE : GL_FALSE);
+    if (s->depth_clamp)
+        glEnable(GL_DEPTH_CLAMP);
+    else
+        glDisable(GL_DEPTH_CLAMP);
+}
+
+void gl_pass_state_reset(void)
+{
+    gl_pass_state_apply(&(gl_pass_state){.depth_write = true});
+    glDepthFunc(GL_LESS);
+}
+
+void gl_texture_buffer_upload(GLuint buffer, GLuint texture, GLenum format, const void *data, size_t bytes)
+{
+    glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+    glBufferData(GL_TEXTURE_BUFFER, (GLsizeiptr)bytes, data, GL_STREAM_DRAW);
+    glBindTexture(GL_TEXTURE_BUFFER, texture);
+    glTexBuffer(GL_TEXTURE_BUFFER, format, buffer);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+}
+
+void gl_samples_begin(GLuint query, bool on)
+{
+    if (on)
+        glBeginQuery(GL_SAMPLES_PASSED, query);
+}
+
+long gl_samples_end(GLuint query, bool on)
+{
+    if (!on)
+        return -1;
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint samples = 0;
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+    return (long)samples;
+}
+
 void gl_util_shutdown(void) { gl_vertex_array_destroy(&state.fullscreen_vao); }

@@ -16,12 +16,23 @@
  *   gl_debug_error_count()                GL errors seen since gl_debug_enable (or by gl_check)
  *   gl_shader_dir()                       where shaders are read from ($COURSE_SHADER_DIR overrides)
  *   gl_draw_fullscreen()                  one triangle covering the viewport (gl_VertexID based)
+ *   gl_pass_state_apply(state)            blend, cull, depth test, depth write and depth clamp from
+ *                                         one literal (zero fields: off)
+ *   gl_pass_state_reset()                 the state every pass starts from and leaves behind: all of
+ *                                         the above off, depth writes on, glDepthFunc(GL_LESS)
+ *   gl_texture_buffer_upload(buffer, texture, format, data, bytes)
+ *                                         fill `buffer` and attach it to the buffer texture
+ *                                         `texture` as `format` (GL_R32I, GL_RGBA32F); unbinds both
+ *   gl_samples_begin(query, on) / gl_samples_end(query, on)
+ *                                         count the fragments that pass (GL_SAMPLES_PASSED) between
+ *                                         the two; end returns the count, or -1 when `on` is false
  */
 #ifndef COMMON_GL_UTIL_H
 #define COMMON_GL_UTIL_H
 
 #include <glad/gl.h>
 #include <stdbool.h>
+#include <stddef.h>
 
 GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
@@ -45,6 +56,22 @@ long gl_debug_error_count(void);
 
 const char *gl_shader_dir(void);
 void gl_draw_fullscreen(void);
+
+/* A pass's fixed-function state as one designated-initialiser literal, so a chapter's lesson reads
+ * as data: {.blend = {GL_ONE, GL_ONE}, .cull = GL_FRONT, .depth_func = GL_GREATER}. */
+typedef struct gl_pass_state {
+    GLenum blend[2];   /* source and destination factors (glBlendFunc); {0, 0}: no blending */
+    GLenum cull;       /* the faces culled (GL_FRONT, GL_BACK); 0: none */
+    GLenum depth_func; /* the depth test (GL_LEQUAL, GL_GREATER, ...); 0: no depth test */
+    bool depth_write;  /* glDepthMask */
+    bool depth_clamp;  /* GL_DEPTH_CLAMP: depth clamped to [0, 1] instead of clipping at near and far */
+} gl_pass_state;
+
+void gl_pass_state_apply(const gl_pass_state *state);
+void gl_pass_state_reset(void);
+void gl_texture_buffer_upload(GLuint buffer, GLuint texture, GLenum format, const void *data, size_t bytes);
+void gl_samples_begin(GLuint query, bool on);
+long gl_samples_end(GLuint query, bool on);
 void gl_util_shutdown(void);
 
 #endif

@@ -1,8 +1,9 @@
 #version 330 core
 // light_volume.frag - one light at one pixel: read the surface from the G-buffer and call
 // shade_light() with exactly the arguments forward.frag gives it.
-// Compiled twice: with OVERWRITE (chapter 04: no blending, so this fragment replaces the pixel and
-// carries the ambient term too) and without (additive blending). Only OVERWRITE discards: a shader
+// With OVERWRITE (chapters 04-05: no blending, straight into the 8-bit target) this fragment
+// replaces the pixel, so it carries the ambient term too and display-encodes its result. Without it
+// (chapter 06 on) it writes linear radiance to be added up. Only OVERWRITE discards: a shader
 // without discard lets llvmpipe run the depth test before the shader.
 #include "shading.glsl"
 #include "gbuffer_read.glsl"
@@ -51,5 +52,8 @@ void main()
 #endif
     if (u_view == 1 && v_volume_radius - d < ring_width)
         c += L.radiance / max(max(L.radiance.r, L.radiance.g), max(L.radiance.b, 1e-6));
+#ifdef OVERWRITE
+    c = display_encode(c);
+#endif
     o_color = vec4(c, 1.0);
 }

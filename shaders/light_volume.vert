@@ -3,16 +3,22 @@
 // contains the light's sphere of influence, or (u_fullscreen) a triangle covering the viewport for
 // a light that reaches everything. The light's data goes to the fragments as flat values, fetched
 // once per vertex instead of once per pixel.
+// FIXED_RADIUS (chapter 04): instance i is light i and every volume has radius u_fixed_radius.
+// Otherwise (chapter 05 on): instance i is light u_light_index[u_first_instance + i], its volume
+// the light's own solved radius.
 #include "shading.glsl"
 
 layout(location = 0) in vec3 a_position;
 
 uniform mat4 u_view_proj;
+uniform float u_mesh_scale; // 1 / inradius: the inscribed mesh grown to contain the unit sphere
+#ifdef FIXED_RADIUS
+uniform float u_fixed_radius;
+#else
 uniform isamplerBuffer u_light_index; // instance -> light, finite volumes first
 uniform int u_first_instance;
-uniform float u_mesh_scale;   // 1 / inradius: the inscribed mesh grown to contain the unit sphere
-uniform float u_fixed_radius; // > 0: every volume this size instead of the solved radius
 uniform bool u_fullscreen;
+#endif
 
 flat out vec3 v_light_position;
 flat out float v_light_radius;  // where shade_light() stops (the solved radius)
@@ -22,13 +28,20 @@ flat out float v_volume_radius; // where the volume stops (the solved or the fix
 
 void main()
 {
+#ifdef FIXED_RADIUS
+    light_data L = light_fetch(gl_InstanceID);
+    v_volume_radius = u_fixed_radius;
+    bool fullscreen = false;
+#else
     light_data L = light_fetch(texelFetch(u_light_index, u_first_instance + gl_InstanceID).r);
+    v_volume_radius = L.radius;
+    bool fullscreen = u_fullscreen;
+#endif
     v_light_position = L.position;
     v_light_radius = L.radius;
     v_light_radiance = L.radiance;
     v_light_attenuation = L.attenuation;
-    v_volume_radius = u_fixed_radius > 0.0 ? u_fixed_radius : L.radius;
-    if (u_fullscreen) {
+    if (fullscreen) {
         vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
         gl_Position = vec4(2.0 * p - 1.0, 0.0, 1.0);
     } else {

@@ -1,6 +1,7 @@
 #version 330 core
 // volume_ambient.frag - the first thing in the light accumulation buffer: ambient light once per
-// covered pixel (the background is discarded and stays black), in linear radiance.
+// covered pixel (the background is discarded and stays black), in linear radiance; with OVERWRITE
+// (chapters 04-05, which draw straight into the 8-bit target) display-encoded.
 #include "shading.glsl"
 #include "gbuffer_read.glsl"
 
@@ -11,5 +12,9 @@ void main()
     surface s = gbuffer_read(ivec2(gl_FragCoord.xy));
     if (s.background)
         discard;
-    o_color = vec4(shade_ambient(s.albedo), 1.0);
+    vec3 c = shade_ambient(s.albedo);
+#ifdef OVERWRITE
+    c = display_encode(c);
+#endif
+    o_color = vec4(c, 1.0);
 }

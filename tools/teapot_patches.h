@@ -1,5 +1,5 @@
 /* teapot_patches.h - the Utah teapot as published by Martin Newell: 32 bicubic Bezier patches
- * over 306 control points (data only, read by tools/gen_scenes.c).
+ * over 306 control points (data only, read by tools/gen_scenes/teapot.c).
  *
  *   teapot_control_points[306][3]   x y z, z up, the teapot standing on z = 0 and 3.15 tall
  *   teapot_patches[32][16]          per patch, 4 rows of 4 control-point indices (0-based)

@@ -10,7 +10,7 @@
 #include "fbo.h"
 #include "gbuffer.h"
 #include "gl_util.h"
-#include "light_volumes.h"
+#include "deferred_volumes.h"
 #include "platform.h"
 
 #include <stdio.h>
@@ -68,8 +68,9 @@ int main(void)
     long empty = gl_live_objects();
     fbo target = {0};
     gbuffer g = {0};
-    light_volumes lv = {0};
-    bool ok = make_target(&target, 96, 64) && gbuffer_create(&g, 96, 64) && light_volumes_create(&lv, &g);
+    deferred_volumes dv = {0};
+    bool ok = make_target(&target, 96, 64) && gbuffer_create(&g, 96, 64) &&
+              deferred_volumes_create(&dv, &g, GL_RGBA16F);
     expect(ok, "target, G-buffer and light volumes created");
     long created = gl_live_objects();
     expect(created > empty, "the helpers counted what they created");
@@ -79,26 +80,26 @@ int main(void)
         int w = 1 + (i * 37) % 301, h = 1 + (i * 53) % 199;
         if (i == RESIZES / 2)
             w = 1024, h = 8;
-        fbo old_target = target, old_g = g.fbo, old_accum = lv.accum;
-        ok = make_target(&target, w, h) && gbuffer_resize(&g, w, h) && light_volumes_resize(&lv, &g);
+        fbo old_target = target, old_g = g.fbo, old_accum = dv.accum;
+        ok = make_target(&target, w, h) && gbuffer_resize(&g, w, h) && deferred_volumes_resize(&dv, &g);
         char what[160];
         snprintf(what, sizeof what, "resize %d to %dx%d succeeds", i + 1, w, h);
         expect(ok, what);
         snprintf(what, sizeof what, "resize %d: live objects %ld (expected %ld)", i + 1, gl_live_objects(),
                  created);
         expect(gl_live_objects() == created, what);
-        expect(target.width == w && g.fbo.width == w && lv.accum.width == w && lv.accum.height == h,
+        expect(target.width == w && g.fbo.width == w && dv.accum.width == w && dv.accum.height == h,
                "every resource follows the new size");
-        expect(lv.accum.depth == g.fbo.depth, "the accumulation buffer shares the new G-buffer depth");
+        expect(dv.accum.depth == g.fbo.depth, "the accumulation buffer shares the new G-buffer depth");
         expect(fbo_replaced(&old_target, &target) && fbo_replaced(&old_g, &g.fbo) &&
-                   fbo_replaced(&old_accum, &lv.accum),
+                   fbo_replaced(&old_accum, &dv.accum),
                "the textures and framebuffers a resize replaced are deleted in GL");
         expect(gl_check("resize"), "no GL error during the resize");
     }
     printf("%s %d resizes, live GL objects %ld before and %ld after\n", failures ? "FAIL" : "ok  ", RESIZES,
            created, gl_live_objects());
 
-    light_volumes_destroy(&lv);
+    deferred_volumes_destroy(&dv);
     gbuffer_destroy(&g);
     fbo_destroy(&target);
     gl_util_shutdown();

@@ -20,10 +20,9 @@
 #include "hard_util.h"
 
 #include "app.h"
-#include "deferred_fullscreen.h"
 #include "gl_util.h"
 #include "light.h"
-#include "light_volumes.h"
+#include "renderers.h"
 
 #include <float.h>
 #include <math.h>
@@ -34,8 +33,10 @@
 
 #define MAX_SIZE 160
 
-typedef enum renderer { FORWARD, FULLSCREEN, VOLUMES, RENDERER_COUNT } renderer;
-static const char *const RENDERER_NAMES[RENDERER_COUNT] = {"forward", "fullscreen", "volumes"};
+typedef enum renderer { FORWARD, FULLSCREEN, VOLUMES, TESTED_COUNT } renderer;
+static const char *const RENDERER_NAMES[TESTED_COUNT] = {"forward", "fullscreen", "volumes"};
+static const renderer_id RENDERER_IDS[TESTED_COUNT] = {RENDERER_FORWARD, RENDERER_DEFERRED_FULLSCREEN,
+                                                       RENDERER_DEFERRED_VOLUMES};
 
 /* One call of shade_light per draw, inputs from uniforms, into a 1x1 RGBA32F target. */
 static const char *const PROBE_VERT =
@@ -59,17 +60,14 @@ static const char *const PROBE_FRAG =
 
 static struct {
     int width, height;
-    forward fwd;
-    gbuffer g;
-    deferred_fullscreen df;
-    light_volumes lv;
+    renderer_set rs; /* the course's renderer table */
     fbo target; /* RGBA8 + D32F, like the app's */
     fbo linear; /* RGBA32F + D32F */
 } state;
 
 /* ---- setup ----------------------------------------------------------------------------------- */
 
-static bool renderers_create(int width, int height)
+static bool setup_create(int width, int height)
 {
     state.width = width, state.height = height;
     const fbo_desc target = {.color_formats = {GL_RGBA8},
@@ -80,21 +78,17 @@ static bool renderers_create(int width, int height)
                              .color_count = 1,
                              .depth_format = GL_DEPTH_COMPONENT32F,
                              .name = "linear"};
-    bool ok = forward_create(&state.fwd) && gbuffer_create(&state.g, width, height) &&
-              deferred_fullscreen_create(&state.df) && light_volumes_create(&state.lv, &state.g) &&
-              fbo_create(&state.target, &target, width, height) &&
+    renderers_create(&state.rs);
+    bool ok = fbo_create(&state.target, &target, width, height) &&
               fbo_create(&state.linear, &linear, width, height);
     return hard_expect(ok, "renderers created at %dx%d", width, height);
 }
 
-static void renderers_destroy(void)
+static void setup_destroy(void)
 {
     fbo_destroy(&state.linear);
     fbo_destroy(&state.target);
-    light_volumes_destroy(&state.lv);
-    deferred_fullscreen_destroy(&state.df);
-    gbuffer_destroy(&state.g);
-    forward_destroy(&state.fwd);
+    renderers_destroy(&state.rs);
 }
 
 typedef struct loaded {
@@ -130,18 +124,7 @@ static bool render(renderer r, loaded *l, double cutoff, image *out)
 {
     if (!gpu_scene_update(&l->gs, 0.0f, cutoff, state.width, state.height))
         return false;
-    bool ok = true;
-    if (r == FORWARD) {
-        glBindFramebuffer(GL_FRAMEBUFFER, state.target.id);
-        ok = forward_render(&state.fwd, &l->gs, app_forward_options("forward"));
-    } else {
-        ok = gbuffer_render(&state.g, &l->gs);
-        glBindFramebuffer(GL_FRAMEBUFFER, state.target.id);
-        if (ok && r == FULLSCREEN)
-            ok = deferred_fullscreen_render(&state.df, &state.g, &l->gs, (deferred_fullscreen_options){0});
-        else if (ok)
-            ok = light_volumes_render(&state.lv, &state.g, &l->gs, (light_volumes_options){0});
-    }
+    bool ok = renderers_draw(&state.rs, RENDERER_IDS[r], &l->gs, state.target.id, (renderer_draw_options){0}, NULL);
     ok = ok && fbo_read_rgba8(&state.target, 0, out);
     return hard_expect(ok && gl_check(RENDERER_NAMES[r]), "render %s at cut-off %g", RENDERER_NAMES[r],
                        cutoff);
@@ -152,10 +135,8 @@ static bool render_linear(loaded *l, double cutoff, float *out)
 {
     if (!gpu_scene_update(&l->gs, 0.0f, cutoff, state.width, state.height))
         return false;
-    glBindFramebuffer(GL_FRAMEBUFFER, state.linear.id);
-    glDisable(GL_DEPTH_CLAMP); /* the light volumes leave it on */
-    const forward_options linear = {.linear_output = true};
-    if (!forward_render(&state.fwd, &l->gs, linear))
+    const renderer_draw_options linear = {.linear_output = true};
+    if (!renderers_draw(&state.rs, RENDERER_FORWARD_NAIVE, &l->gs, state.linear.id, linear, NULL))
         return false;
     hard_read_rgba_float(state.linear.id, state.width, state.height, out);
     /* Alpha marks coverage for the checks: 1 where a surface was drawn (depth < 1), else 0. */
@@ -380,7 +361,7 @@ static int grazing_variant(const char *name, const char *light_line, const doubl
     if (!parse(text, &l))
         return 1;
     int failures_before = hard_failures();
-    for (int r = 0; r < RENDERER_COUNT; r++) {
+    for (int r = 0; r < TESTED_COUNT; r++) {
         image img;
         if (!render((renderer)r, &l, LIGHT_DEFAULT_CUTOFF, &img))
             continue;
@@ -437,7 +418,7 @@ static int grazing_variant(const char *name, const char *light_line, const doubl
  * and the specular term, which is not scaled by n.l, then shows at full strength. */
 static int run_grazing(bool strict)
 {
-    if (!renderers_create(96, 72))
+    if (!setup_create(96, 72))
         return hard_finish();
     const double below[3] = {0.3, -0.001, 0.2}, on[3] = {0.3, 0.0, 0.2}, above[3] = {0.3, 0.6, 0.2};
     if (!strict) {
@@ -450,7 +431,7 @@ static int run_grazing(bool strict)
      * cannot exceed 255 levels, so this bounds only NaN-turned-black and wrong-sign results). */
     grazing_variant("light on the plane (d = 0 at one point)",
                     "light position 0.3 0 0.2 attenuation 1 0.1 0.05", on, true, strict ? 1 : 255);
-    renderers_destroy();
+    setup_destroy();
     return hard_finish();
 }
 
@@ -488,7 +469,7 @@ static error_stats compare_linear(const loaded *l, const float *cut, const float
 static int run_overlap(const char *path)
 {
     int w = 96, h = 72;
-    if (!renderers_create(w, h))
+    if (!setup_create(w, h))
         return hard_finish();
     loaded l;
     if (!load(path, -1, &l))
@@ -523,35 +504,30 @@ static int run_overlap(const char *path)
         }
     }
     /* The pictures: RGBA16F accumulation of up to 200 blends against float sums. */
-    image img[RENDERER_COUNT];
-    for (int r = 0; r < RENDERER_COUNT; r++)
+    image img[TESTED_COUNT];
+    for (int r = 0; r < TESTED_COUNT; r++)
         render((renderer)r, &l, LIGHT_DEFAULT_CUTOFF, &img[r]);
     /* Lights ending near a pixel's distance flip in or out with the reconstructed position: one
      * light's cut-off step, 0.0195 * (0.8 + 0.2) linear, a few levels once encoded. */
     compare_many(&l, img, 4, 0.25);
-    for (int r = 0; r < RENDERER_COUNT; r++)
+    for (int r = 0; r < TESTED_COUNT; r++)
         image_destroy(&img[r]);
     /* Speed against error on the same scene: best of 2 frames, chapter 07's volumes and forward. */
     printf("\n%10s %12s %12s %14s\n", "cut-off", "volumes ms", "forward ms", "shaded pixels");
     for (size_t c = 0; c < sizeof cutoffs / sizeof cutoffs[0] + 1; c++) {
         double cutoff = c == 0 ? 0.0 : cutoffs[c - 1];
-        double ms[RENDERER_COUNT] = {0};
+        double ms[TESTED_COUNT] = {0};
         long shaded = 0;
-        for (int r = 0; r < RENDERER_COUNT; r += 2) {
+        for (int r = 0; r < TESTED_COUNT; r += 2) {
             gpu_scene_update(&l.gs, 0.0f, cutoff, w, h);
             double best = 1e30;
             for (int frame = 0; frame < 2; frame++) {
                 double t0 = now_ms();
-                if (r == FORWARD) {
-                    glBindFramebuffer(GL_FRAMEBUFFER, state.target.id);
-                    forward_render(&state.fwd, &l.gs, app_forward_options("forward"));
-                } else {
-                    gbuffer_render(&state.g, &l.gs);
-                    glBindFramebuffer(GL_FRAMEBUFFER, state.target.id);
-                    light_volumes_render(&state.lv, &state.g, &l.gs,
-                                         (light_volumes_options){.count_pixels = true});
-                    shaded = light_volumes_shaded_pixels(&state.lv);
-                }
+                renderer_result res;
+                renderers_draw(&state.rs, RENDERER_IDS[r], &l.gs, state.target.id,
+                               (renderer_draw_options){.count_pixels = r == VOLUMES}, &res);
+                if (r == VOLUMES)
+                    shaded = res.shaded;
                 glFinish();
                 best = fmin(best, now_ms() - t0);
             }
@@ -562,7 +538,7 @@ static int run_overlap(const char *path)
     free(exact);
     free(cut);
     unload(&l);
-    renderers_destroy();
+    setup_destroy();
     return hard_finish();
 }
 
@@ -571,7 +547,7 @@ static int run_overlap(const char *path)
 static int run_hdr(const char *path_a, const char *path_b)
 {
     int w = 64, h = 48;
-    if (!renderers_create(w, h))
+    if (!setup_create(w, h))
         return hard_finish();
     const char *paths[2] = {path_a, path_b};
     float *accum = malloc((size_t)w * h * 4 * sizeof *accum);
@@ -580,10 +556,10 @@ static int run_hdr(const char *path_a, const char *path_b)
         if (!load(paths[s], -1, &l))
             continue;
         /* The light volumes' RGBA16F accumulation buffer, read before it is presented. */
-        image img[RENDERER_COUNT];
-        for (int r = 0; r < RENDERER_COUNT; r++)
+        image img[TESTED_COUNT];
+        for (int r = 0; r < TESTED_COUNT; r++)
             render((renderer)r, &l, LIGHT_DEFAULT_CUTOFF, &img[r]);
-        hard_read_rgba_float(state.lv.accum.id, w, h, accum);
+        hard_read_rgba_float(renderers_accum(&state.rs)->id, w, h, accum);
         long nan = 0, inf = 0, over = 0, finite_max_count = 0;
         float largest = 0;
         for (int i = 0; i < w * h * 4; i++) {
@@ -607,7 +583,7 @@ static int run_hdr(const char *path_a, const char *path_b)
         hard_expect(nan == 0, "%s: no NaN in the accumulation buffer (%ld)", paths[s], nan);
         hard_expect(inf + finite_max_count + over > 0, "%s: the scene does overflow 1 somewhere", paths[s]);
         /* The picture: wherever the accumulation is above 1 (Inf included), the pixel is white. */
-        for (int r = 0; r < RENDERER_COUNT; r++) {
+        for (int r = 0; r < TESTED_COUNT; r++) {
             long not_white = 0, saturated = 0;
             for (int y = 0; y < h; y++)
                 for (int x = 0; x < w; x++) {
@@ -627,12 +603,12 @@ static int run_hdr(const char *path_a, const char *path_b)
         same_picture(&img[FORWARD], &img[FULLSCREEN], 1, "forward vs fullscreen");
         if (s == 0)
             save_picture("hard_hdr_1e6.png", &img[VOLUMES]);
-        for (int r = 0; r < RENDERER_COUNT; r++)
+        for (int r = 0; r < TESTED_COUNT; r++)
             image_destroy(&img[r]);
         unload(&l);
     }
     free(accum);
-    renderers_destroy();
+    setup_destroy();
     return hard_finish();
 }
 
@@ -641,13 +617,13 @@ static int run_hdr(const char *path_a, const char *path_b)
 static int run_degenerate(const char *path)
 {
     int w = 128, h = 96;
-    if (!renderers_create(w, h))
+    if (!setup_create(w, h))
         return hard_finish();
     loaded l;
     if (!load(path, -1, &l))
         return hard_finish();
-    image img[RENDERER_COUNT];
-    for (int r = 0; r < RENDERER_COUNT; r++)
+    image img[TESTED_COUNT];
+    for (int r = 0; r < TESTED_COUNT; r++)
         render((renderer)r, &l, LIGHT_DEFAULT_CUTOFF, &img[r]);
     float *lin = malloc((size_t)w * h * 4 * sizeof *lin);
     render_linear(&l, LIGHT_DEFAULT_CUTOFF, lin);
@@ -663,7 +639,7 @@ static int run_degenerate(const char *path)
                 "linear picture: %ld covered pixels, %ld non-finite values", covered, nonfinite);
     /* Covered pixels are never black: the ambient term alone gives at least encode(0.15 * 0.2) per channel.
      */
-    for (int r = 0; r < RENDERER_COUNT; r++) {
+    for (int r = 0; r < TESTED_COUNT; r++) {
         long black = 0;
         for (int y = 0; y < h; y++)
             for (int x = 0; x < w; x++) {
@@ -677,11 +653,11 @@ static int run_degenerate(const char *path)
     same_picture(&img[FORWARD], &img[FULLSCREEN], 1, "degenerate models: forward vs fullscreen");
     same_picture(&img[FORWARD], &img[VOLUMES], 1, "degenerate models: forward vs volumes");
     save_picture("hard_degenerate.png", &img[VOLUMES]);
-    for (int r = 0; r < RENDERER_COUNT; r++)
+    for (int r = 0; r < TESTED_COUNT; r++)
         image_destroy(&img[r]);
     free(lin);
     unload(&l);
-    renderers_destroy();
+    setup_destroy();
     return hard_finish();
 }
 
@@ -698,13 +674,17 @@ static int run_degenerate(const char *path)
  * The 8-bit pictures may then differ from forward by a few levels where that rounding crosses one,
  * or where a light's cut-off sphere passes through the pixel and the rebuilt position falls on the
  * other side of it than forward's (docs/hard-cases.md, case 13). */
-static bool render_volumes_linear(loaded *l, light_volumes_options o, float *out)
+static bool render_volumes_linear(loaded *l, GLenum accum_format, light_volumes_view view, float *out)
 {
-    gbuffer_render(&state.g, &l->gs);
-    glBindFramebuffer(GL_FRAMEBUFFER, state.target.id);
-    if (!light_volumes_render(&state.lv, &state.g, &l->gs, o))
+    const deferred_volumes_frame f = {
+        .volume_state = &renderer_volume_pass, .accum_format = accum_format, .view = view};
+    /* The table's draw makes the renderer and fills the G-buffer; then the same frame again with
+     * another accumulation format or view. */
+    if (!renderers_draw(&state.rs, RENDERER_DEFERRED_VOLUMES, &l->gs, state.target.id,
+                        (renderer_draw_options){0}, NULL) ||
+        !deferred_volumes_render(&state.rs.volumes, &state.rs.g, &l->gs, state.target.id, &f))
         return false;
-    hard_read_rgba_float(state.lv.accum.id, state.width, state.height, out);
+    hard_read_rgba_float(renderers_accum(&state.rs)->id, state.width, state.height, out);
     return true;
 }
 
@@ -719,10 +699,9 @@ static void compare_many(loaded *l, image *img, int max_levels, double max_fract
                 st.max_abs, max_levels, 100 * st.frac_over);
     size_t bytes = (size_t)w * h * 4 * sizeof(float);
     float *half = malloc(bytes), *full = malloc(bytes), *count = malloc(bytes);
-    const light_volumes_options o16 = {0}, o32 = {.accum_format = GL_RGBA32F},
-                                n32 = {.accum_format = GL_RGBA32F, .view = LIGHT_VOLUMES_VIEW_OVERDRAW};
-    bool ok = half && full && count && render_volumes_linear(l, o16, half) && render_volumes_linear(l, o32, full) &&
-              render_volumes_linear(l, n32, count);
+    bool ok = half && full && count && render_volumes_linear(l, GL_RGBA16F, LIGHT_VOLUMES_VIEW_LIT, half) &&
+              render_volumes_linear(l, GL_RGBA32F, LIGHT_VOLUMES_VIEW_LIT, full) &&
+              render_volumes_linear(l, GL_RGBA32F, LIGHT_VOLUMES_VIEW_OVERDRAW, count);
     hard_expect(ok, "many lights: three volume renders read back");
     double u = ldexp(1, -11), worst_ratio = 0, mean_n = 0, max_n = 0;
     long covered = 0, over = 0;
@@ -761,16 +740,16 @@ static void compare_many(loaded *l, image *img, int max_levels, double max_fract
 static int run_counts(const char *path)
 {
     int w = 32, h = 24;
-    if (!renderers_create(w, h))
+    if (!setup_create(w, h))
         return hard_finish();
     const int counts[] = {0, 65536};
     for (int c = 0; c < 2; c++) {
         loaded l;
         if (!load(path, counts[c], &l))
             continue;
-        image img[RENDERER_COUNT];
-        double ms[RENDERER_COUNT];
-        for (int r = 0; r < RENDERER_COUNT; r++) {
+        image img[TESTED_COUNT];
+        double ms[TESTED_COUNT];
+        for (int r = 0; r < TESTED_COUNT; r++) {
             double t0 = now_ms();
             render((renderer)r, &l, LIGHT_DEFAULT_CUTOFF, &img[r]);
             ms[r] = now_ms() - t0;
@@ -801,11 +780,11 @@ static int run_counts(const char *path)
             hard_expect(worst <= 1, "0 lights: pixels equal encode(ambient * albedo) within 1/255 (worst %d)",
                         worst);
         }
-        for (int r = 0; r < RENDERER_COUNT; r++)
+        for (int r = 0; r < TESTED_COUNT; r++)
             image_destroy(&img[r]);
         unload(&l);
     }
-    renderers_destroy();
+    setup_destroy();
     return hard_finish();
 }
 
@@ -822,7 +801,7 @@ static const char *const CULLED_SCENE = "camera eye 0 3 4 target 0 0 0 fovy 50 n
 
 static int run_culled(void)
 {
-    if (!renderers_create(96, 72))
+    if (!setup_create(96, 72))
         return hard_finish();
     /* peak / kc = 0.019 <= 5/256 = 0.01953: never reaches the cut-off, even at d = 0 */
     char text[1024];
@@ -868,7 +847,7 @@ static int run_culled(void)
         image_destroy(&c);
         unload(&flat);
     }
-    renderers_destroy();
+    setup_destroy();
     return hard_finish();
 }
 
