@@ -39,7 +39,7 @@ static void report_size(int width, int height)
 
 static bool init(app *a)
 {
-    if (!gbuffer_create(&state.gbuf, a->width, a->height) || !deferred_fullscreen_create(&state.lighting))
+    if (!gbuffer_create(&state.gbuf, a->width, a->height) || !deferred_fullscreen_create(&state.lighting, NULL))
         return false;
     state.view_program = gl_program_load("fullscreen.vert", "gbuffer_view.frag", NULL);
     if (!state.view_program)
@@ -82,8 +82,8 @@ static bool frame(app *a)
     /* 2. look at one target, or light them all (chapter 03's pass) */
     if (!app_view_is(a, "final"))
         return draw_view(a);
-    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
-    return deferred_fullscreen_render(&state.lighting, &state.gbuf, &a->gs, (deferred_fullscreen_options){0});
+    return deferred_fullscreen_render(&state.lighting, &state.gbuf, &a->gs, a->target.id,
+                                      (deferred_fullscreen_options){0});
 }
 
 static void cleanup(app *a)

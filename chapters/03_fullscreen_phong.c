@@ -3,52 +3,79 @@
  *
  * Compare with 00_forward (key R): the picture is the same to 1/255 (tests/chapters_01_03.cmake),
  * but each pixel is now shaded exactly once, whatever the depth complexity, and the objects are
- * drawn once, whatever the number of lights. The lesson is shaders/deferred_fullscreen.frag:
- * it reads the surface back (shaders/gbuffer_read.glsl), rebuilds the world position from depth
- * with the inverse view-projection, and calls the same shade_light() as forward.frag.
- * The two passes live in common/ (gbuffer.c, deferred_fullscreen.c) because chapters 04-07 and
- * the benchmark reuse them. Read docs/03_fullscreen_phong.md alongside.
+ * drawn once, whatever the number of lights.
+ *
+ * Taken over: the G-buffer pass (common/gbuffer.c, chapter 02). New here: the lighting pass,
+ * shaders/deferred_fullscreen.frag. It reads the surface back (shaders/gbuffer_read.glsl),
+ * rebuilds the world position from depth with the inverse view-projection, and calls the same
+ * shade_light() as forward.frag, once per light. The pass lives in common/deferred_fullscreen.c
+ * because chapter 02's lit view and the benchmark draw it too.
+ *
+ * The cost of this pass is pixels x lights, and most of it is wasted: with a cut-off a light only
+ * reaches the points within its radius, and shade_light() returns zero for the others. The reach
+ * view (V, or --view reach) shows, per pixel, the fraction of the loop that does any work: grey
+ * = lights that reach this pixel / lights looped over. With the city's 757 lights most pixels are
+ * near black. Chapter 04 skips those zeros before the shader runs.
+ * Read docs/03_fullscreen_phong.md alongside.
  */
 #include "app.h"
 #include "deferred_fullscreen.h"
 #include "gbuffer.h"
+#include "log.h"
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
+static const char *const views[] = {"lit", "reach", NULL};
 
 static struct {
     gbuffer gbuf;
-    deferred_fullscreen lighting;
+    deferred_fullscreen lighting; /* the lighting pass */
+    deferred_fullscreen reach;    /* the same loop, counting the lights that reach each pixel */
 } state;
 
 static bool init(app *a)
 {
-    return gbuffer_create(&state.gbuf, a->width, a->height) && deferred_fullscreen_create(&state.lighting);
+    return gbuffer_create(&state.gbuf, a->width, a->height) &&
+           deferred_fullscreen_create(&state.lighting, NULL) &&
+           deferred_fullscreen_create(&state.reach, "VIEW_REACH 1");
 }
 
 static bool resize(app *a) { return gbuffer_resize(&state.gbuf, a->width, a->height); }
 
+/* --verbose: the pass's cost in light evaluations, against what reaches anything. */
+static void log_cost(const app *a)
+{
+    static double logged_cutoff = -1.0;
+    if (a->cutoff == logged_cutoff)
+        return;
+    logged_cutoff = a->cutoff;
+    log_debug("lighting pass: every covered pixel loops over %d lights (%d culled by the cut-off %.4g, "
+              "%d with an infinite radius)",
+              a->gs.light_count, a->gs.culled_count, a->cutoff, a->gs.infinite_count);
+}
+
 static bool frame(app *a)
 {
-    if (app_renderer_is(a, "forward"))
+    if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
+    log_cost(a);
 
     /* 1. geometry pass: every object once, into the G-buffer (albedo, normal + material, depth) */
     if (!gbuffer_render(&state.gbuf, &a->gs))
         return false;
 
     /* 2. lighting pass: a full-screen triangle into the target, all lights per pixel */
-    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
+    deferred_fullscreen *pass = app_view_is(a, "reach") ? &state.reach : &state.lighting;
     const deferred_fullscreen_options options = {.count_pixels = a->options->bench};
-    if (!deferred_fullscreen_render(&state.lighting, &state.gbuf, &a->gs, options))
+    if (!deferred_fullscreen_render(pass, &state.gbuf, &a->gs, a->target.id, options))
         return false;
-    if (options.count_pixels)
-        a->shaded_pixels = deferred_fullscreen_shaded_pixels(&state.lighting);
+    a->shaded_pixels = deferred_fullscreen_shaded_pixels(pass);
     return true;
 }
 
 static void cleanup(app *a)
 {
     (void)a;
+    deferred_fullscreen_destroy(&state.reach);
     deferred_fullscreen_destroy(&state.lighting);
     gbuffer_destroy(&state.gbuf);
 }
@@ -61,7 +88,9 @@ int main(int argc, char **argv)
                 .program = "03_fullscreen_phong",
                 .summary = "Chapter 03: deferred shading with a full-screen lighting pass over all lights.",
                 .renderers = renderers,
-                .keys = "  R        switch deferred / forward (the pictures must agree)\n",
+                .views = views,
+                .keys = "  R        switch deferred / forward (the pictures must agree)\n"
+                        "  V        view: lit, or reach (the fraction of the light loop that does work)\n",
             },
         .init = init,
         .resize = resize,

@@ -5,11 +5,11 @@
 
 #include <string.h>
 
-bool deferred_fullscreen_create(deferred_fullscreen *d)
+bool deferred_fullscreen_create(deferred_fullscreen *d, const char *defines)
 {
     memset(d, 0, sizeof *d);
     d->shaded_pixels = -1;
-    d->program = gl_program_load("fullscreen.vert", "deferred_fullscreen.frag", NULL);
+    d->program = gl_program_load("fullscreen.vert", "deferred_fullscreen.frag", defines);
     if (!d->program)
         return false;
     d->query = gl_query_create();
@@ -23,29 +23,21 @@ void deferred_fullscreen_destroy(deferred_fullscreen *d)
     memset(d, 0, sizeof *d);
 }
 
-bool deferred_fullscreen_render(deferred_fullscreen *d, const gbuffer *g, const gpu_scene *gs,
+bool deferred_fullscreen_render(deferred_fullscreen *d, const gbuffer *g, const gpu_scene *gs, GLuint target,
                                 deferred_fullscreen_options options)
 {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, g->fbo.width, g->fbo.height);
+    gl_pass_state_reset();
     /* Background pixels are discarded by the shader: they keep this black, as forward's clear. */
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-
     glUseProgram(d->program);
     gpu_scene_bind_lights(gs, d->program, 0);
     gbuffer_bind_textures(g, gs, d->program, 1);
-    if (options.count_pixels)
-        glBeginQuery(GL_SAMPLES_PASSED, d->query);
+    gl_samples_begin(d->query, options.count_pixels);
     gl_draw_fullscreen();
-    if (options.count_pixels) {
-        glEndQuery(GL_SAMPLES_PASSED);
-        GLuint samples = 0;
-        glGetQueryObjectuiv(d->query, GL_QUERY_RESULT, &samples);
-        d->shaded_pixels = (long)samples;
-    }
+    d->shaded_pixels = gl_samples_end(d->query, options.count_pixels);
     return gl_check("deferred_fullscreen_render");
 }
 

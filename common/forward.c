@@ -117,10 +117,11 @@ bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options option
     return true;
 }
 
-bool forward_render(forward *f, const gpu_scene *gs, forward_options options)
+bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_options options)
 {
     if (options.light_lists && !forward_build_light_lists(f, gs))
         return false;
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, gs->view.width, gs->view.height);
     glClearColor(0, 0, 0, 1);
     gl_pass_state_reset();

@@ -2,8 +2,9 @@
  *
  *   forward_create(f)                       compile the shaders
  *   forward_destroy(f)
- *   forward_render(f, gs, options)          draw gs into the bound framebuffer (cleared here):
- *                                           the three passes below with the state they need
+ *   forward_render(f, gs, target, options)  draw gs into the framebuffer `target` (cleared here):
+ *                                           the three passes below with the state they need;
+ *                                           leaves gl_pass_state_reset()'s state
  *   forward_build_light_lists(f, gs)        per object, the lights that reach it, uploaded
  *   forward_draw_depth(f, gs)               every object into the depth buffer only
  *   forward_draw_shaded(f, gs, options)     every object shaded (lists when options.light_lists),
@@ -49,7 +50,7 @@ typedef struct forward {
 
 bool forward_create(forward *f);
 void forward_destroy(forward *f);
-bool forward_render(forward *f, const gpu_scene *gs, forward_options options);
+bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_options options);
 bool forward_build_light_lists(forward *f, const gpu_scene *gs);
 void forward_draw_depth(const forward *f, const gpu_scene *gs);
 bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options);

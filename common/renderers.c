@@ -59,7 +59,7 @@ static bool ensure(renderer_set *r, renderer_id id, const gpu_scene *gs)
     if (!ensure_gbuffer(r, gs))
         return false;
     if (id == RENDERER_DEFERRED_FULLSCREEN)
-        return r->have_fullscreen || (r->have_fullscreen = deferred_fullscreen_create(&r->fullscreen));
+        return r->have_fullscreen || (r->have_fullscreen = deferred_fullscreen_create(&r->fullscreen, NULL));
     return r->have_volumes || (r->have_volumes = deferred_volumes_create(&r->volumes, &r->g, GL_RGBA16F));
 }
 
@@ -69,8 +69,7 @@ static bool draw_forward(renderer_set *r, renderer_id id, const gpu_scene *gs, G
     forward_options fo = renderer_table[id].forward_options;
     fo.count_pixels = o.count_pixels;
     fo.linear_output = o.linear_output;
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    bool ok = forward_render(&r->fwd, gs, fo);
+    bool ok = forward_render(&r->fwd, gs, target, fo);
     res->shaded = o.count_pixels ? forward_shaded_pixels(&r->fwd) : -1;
     res->lights_per_pixel = fo.light_lists && gs->src->object_count > 0
                                 ? (double)r->fwd.list_entries / gs->src->object_count
@@ -86,10 +85,8 @@ bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint
     if (ok && renderer_table[id].forward) {
         ok = draw_forward(r, id, gs, target, o, &res);
     } else if (ok && id == RENDERER_DEFERRED_FULLSCREEN) {
-        ok = gbuffer_render(&r->g, gs);
-        glBindFramebuffer(GL_FRAMEBUFFER, target);
         const deferred_fullscreen_options fo = {.count_pixels = o.count_pixels};
-        ok = ok && deferred_fullscreen_render(&r->fullscreen, &r->g, gs, fo);
+        ok = gbuffer_render(&r->g, gs) && deferred_fullscreen_render(&r->fullscreen, &r->g, gs, target, fo);
         res.shaded = o.count_pixels ? deferred_fullscreen_shaded_pixels(&r->fullscreen) : -1;
         res.lights_per_pixel = gs->light_count;
     } else if (ok) {

@@ -1,6 +1,8 @@
 #version 330 core
 // deferred_fullscreen.frag - the lighting pass: one full-screen triangle, every pixel reads its
 // surface from the G-buffer and loops over all lights with the same shade_light() as forward.frag.
+// VIEW_REACH (chapter 03's reach view): instead, the fraction of those lights that reach the pixel
+// at all, display-encoded as grey: the rest of the loop returns zero, which chapter 04 avoids.
 #include "shading.glsl"
 #include "gbuffer_read.glsl"
 
@@ -12,6 +14,15 @@ void main()
     // Nothing drawn here: keep the cleared black, and do not count the pixel as shaded.
     if (s.background)
         discard;
+#ifdef VIEW_REACH
+    int reached = 0;
+    for (int i = 0; i < u_light_count; i++) {
+        light_data L = light_fetch(i);
+        reached += distance(L.position, s.position) <= L.radius ? 1 : 0;
+    }
+    o_color = vec4(display_encode(vec3(float(reached) / float(max(u_light_count, 1)))), 1.0);
+    return;
+#endif
     vec3 n = s.normal;
     vec3 v = safe_normalize(u_eye - s.position, n);
     vec3 c = shade_ambient(s.albedo);

@@ -26,6 +26,10 @@ function(chapters_01_03_tests)
       03_fullscreen_phong --time 3 VS 00_forward --time 3)
     # The R key's other renderer is chapter 00's, bit for bit.
     course_agreement_test(03_renderer_forward 0 0 03_fullscreen_phong --renderer forward VS 00_forward)
+    # The reach view: at cut-off 0.1 each light reaches part of the scene (the grey steps), and
+    # at cut-off 0 every light reaches every pixel: white wherever a surface is.
+    course_golden_test(03_fullscreen_phong_reach 03_fullscreen_phong 1 0.0001 --view reach --cutoff 0.1)
+    course_golden_test(03_fullscreen_phong_reach_exact 03_fullscreen_phong 1 0.0001 --view reach --cutoff 0)
   endif()
 
   if(TARGET 02_mrt_gbuffer AND TARGET 03_fullscreen_phong)

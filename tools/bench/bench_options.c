@@ -1,0 +1,326 @@
+/* bench_options.c - see bench_options.h. */
+#include "bench_options.h"
+
+#include "bench_renderers.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const default_renderers =
+    "forward-naive,forward,deferred-fullscreen,deferred-volumes";
+
+void bench_options_print_help(FILE *f)
+{
+    fprintf(
+        f,
+        "usage: bench [options]\n"
+        "Times forward and deferred renderers on the same frames, counts their lighting work and\n"
+        "measures their error against an exact reference; writes DIR/bench.csv, DIR/bench.md,\n"
+        "DIR/time_vs_lights.png and DIR/speed_vs_error.png (gnuplot).\n\n"
+        "  --lights LIST         light counts, comma-separated; 'scene' = the scene's own lights\n"
+        "                        (default 1,4,16,64,256,1024,4096,scene)\n"
+        "  --scenes LIST         scene names in --scene-dir or .scene paths\n"
+        "                        (default default,city,bunnies,sphere,teapots)\n"
+        "  --renderers LIST      of: forward-naive forward forward-prepass forward-lists\n"
+        "                        deferred-fullscreen deferred-volumes (default: forward-naive, forward,\n"
+        "                        fullscreen, volumes)\n"
+        "  --cutoffs LIST        cut-off sweep in 1/256 units (default 0.5,1,2,5,10,20,32)\n"
+        "  --cutoff-scene NAME   scene of the cut-off sweep (default: the first of --scenes)\n"
+        "  --cutoff-lights N     light count of the cut-off sweep (default 256)\n"
+        "  --size WxH            frame size (default 800x800)\n"
+        "  --frames N            timed frames per renderer and case (default 10)\n"
+        "  --warmup N            untimed frames first (default 2; llvmpipe compiles shaders at first draw)\n"
+        "  --max-frame-ms MS     skip a case predicted slower than this per frame (default 1500);\n"
+        "                        its time is extrapolated from the two previous light counts\n"
+        "  --case-budget-ms MS   time per renderer and case; slower cases take fewer frames, at least 3\n"
+        "                        (default 1500)\n"
+        "  --error-max-lights N  measure the error only up to N lights: the exact reference shades\n"
+        "                        every pixel with every light (default 256; the cut-off\n"
+        "                        sweep always measures it)\n"
+        "  --seed N              light_generate seed (default 1)\n"
+        "  --scene-dir DIR       where scene names are looked up (default assets/scenes)\n"
+        "  --out DIR             output folder (default out)\n"
+        "  --backend egl|osmesa  headless GL (default egl)\n"
+        "  --no-plots            skip gnuplot\n"
+        "  --quick               small sweep for tests: 160x160, default scene, 1,16,64 lights,\n"
+        "                        3 frames, cut-offs 2,5,16 at 16 lights\n"
+        "  --help                this text\n\n"
+        "exit codes: 0 ok, 1 runtime failure, 2 usage error, 77 no GL context\n");
+}
+
+static bool usage_error(const char *what, const char *value)
+{
+    fprintf(stderr, "bench: %s: '%s' (see --help)\n", what, value ? value : "(missing)");
+    return false;
+}
+
+/* The whole of s as a number in [lo, hi]; integer: read as strtol reads base 10, so "1e3" is not one. */
+static bool parse_number(const char *s, bool integer, double lo, double hi, double *out)
+{
+    if (!s || !*s)
+        return false;
+    char *end;
+    errno = 0;
+    double v = integer ? (double)strtol(s, &end, 10) : strtod(s, &end);
+    if (*end || errno || !(v >= lo && v <= hi))
+        return false;
+    *out = v;
+    return true;
+}
+
+static bool parse_int(const char *s, int lo, int hi, int *out)
+{
+    double v;
+    if (!parse_number(s, true, lo, hi, &v))
+        return false;
+    *out = (int)v;
+    return true;
+}
+
+static bool parse_double(const char *s, double lo, double hi, double *out)
+{
+    return parse_number(s, false, lo, hi, out);
+}
+
+/* Splits a comma-separated list into items; false on an empty item, a too long one, or too many. */
+static bool split_list(const char *list, char items[MAX_LIST][NAME_MAX_LEN], int *count)
+{
+    *count = 0;
+    if (!list || !*list)
+        return false;
+    const char *p = list;
+    for (;;) {
+        const char *comma = strchr(p, ',');
+        size_t len = comma ? (size_t)(comma - p) : strlen(p);
+        if (len == 0 || len >= NAME_MAX_LEN || *count == MAX_LIST)
+            return false;
+        memcpy(items[*count], p, len);
+        items[*count][len] = '\0';
+        (*count)++;
+        if (!comma)
+            return true;
+        p = comma + 1;
+    }
+}
+
+static bool set_lights(bench_options *o, const char *list)
+{
+    char items[MAX_LIST][NAME_MAX_LEN];
+    if (!split_list(list, items, &o->light_list_count))
+        return usage_error("bad --lights list", list);
+    for (int i = 0; i < o->light_list_count; i++)
+        if (strcmp(items[i], "scene") == 0)
+            o->lights[i] = LIGHTS_OWN;
+        else if (!parse_int(items[i], 0, 1 << 20, &o->lights[i]))
+            return usage_error("bad light count in --lights", items[i]);
+    return true;
+}
+
+static bool set_renderers(bench_options *o, const char *list)
+{
+    char items[MAX_LIST][NAME_MAX_LEN];
+    if (!split_list(list, items, &o->renderer_count))
+        return usage_error("bad --renderers list", list);
+    for (int i = 0; i < o->renderer_count; i++) {
+        o->renderers[i] = bench_renderer_find(items[i]);
+        if (o->renderers[i] < 0)
+            return usage_error("unknown renderer in --renderers", items[i]);
+    }
+    return true;
+}
+
+static bool set_cutoffs(bench_options *o, const char *list)
+{
+    char items[MAX_LIST][NAME_MAX_LEN];
+    if (!split_list(list, items, &o->cutoff_count))
+        return usage_error("bad --cutoffs list", list);
+    for (int i = 0; i < o->cutoff_count; i++)
+        if (!parse_double(items[i], 1e-6, 255.0, &o->cutoffs[i]))
+            return usage_error("bad cut-off in --cutoffs (1/256 units, > 0)", items[i]);
+    return true;
+}
+
+static bool set_scenes(bench_options *o, const char *list)
+{
+    if (!split_list(list, o->scenes, &o->scene_count))
+        return usage_error("bad --scenes list", list);
+    return true;
+}
+
+/* The defaults go through the same parsers as the options (they cannot fail). */
+static void set_defaults(bench_options *o)
+{
+    memset(o, 0, sizeof *o);
+    set_lights(o, "1,4,16,64,256,1024,4096,scene");
+    set_scenes(o, "default,city,bunnies,sphere,teapots");
+    set_renderers(o, default_renderers);
+    set_cutoffs(o, "0.5,1,2,5,10,20,32");
+    o->cutoff_lights = 256;
+    o->width = o->height = 800;
+    o->frames = 10, o->warmup = 2, o->min_frames = 3;
+    o->max_frame_ms = 1500, o->case_budget_ms = 1500;
+    o->error_max_lights = 256;
+    o->seed = 1;
+    o->scene_dir = "assets/scenes";
+    o->out_dir = "out";
+    o->plots = true;
+    o->backend = CLI_BACKEND_EGL;
+}
+
+static void set_quick(bench_options *o)
+{
+    o->quick = true;
+    set_lights(o, "1,16,64");
+    set_scenes(o, "default");
+    set_cutoffs(o, "2,5,16");
+    o->cutoff_lights = 16;
+    o->width = o->height = 160;
+    o->frames = 3, o->warmup = 1;
+    o->case_budget_ms = 1000;
+}
+
+/* What one option with a value made of its value; OPTION_UNKNOWN lets the next group try it. */
+typedef enum option_result { OPTION_UNKNOWN, OPTION_GOOD, OPTION_BAD } option_result;
+
+static option_result option_result_of(bool good)
+{
+    return good ? OPTION_GOOD : OPTION_BAD;
+}
+
+/* The options that pick the cases. */
+static option_result parse_sweep_option(bench_options *o, const char *a, const char *v,
+                                        bool *have_cutoff_scene)
+{
+    bool good;
+    if (strcmp(a, "--lights") == 0) {
+        good = set_lights(o, v);
+    } else if (strcmp(a, "--scenes") == 0) {
+        good = set_scenes(o, v);
+    } else if (strcmp(a, "--renderers") == 0) {
+        good = set_renderers(o, v);
+    } else if (strcmp(a, "--cutoffs") == 0) {
+        good = set_cutoffs(o, v);
+    } else if (strcmp(a, "--cutoff-scene") == 0) {
+        good = v && *v && strlen(v) < NAME_MAX_LEN ? (snprintf(o->cutoff_scene, NAME_MAX_LEN, "%s", v), true)
+                                                   : usage_error("bad --cutoff-scene", v);
+        *have_cutoff_scene = true;
+    } else if (strcmp(a, "--cutoff-lights") == 0) {
+        good = parse_int(v, 1, 1 << 20, &o->cutoff_lights) || usage_error("bad --cutoff-lights", v);
+    } else if (strcmp(a, "--seed") == 0) {
+        int seed = 0;
+        good = parse_int(v, 0, 2147483647, &seed) || usage_error("bad --seed", v);
+        o->seed = (uint32_t)seed;
+    } else {
+        return OPTION_UNKNOWN;
+    }
+    return option_result_of(good);
+}
+
+/* The options that decide how each case is drawn and timed. */
+static option_result parse_timing_option(bench_options *o, const char *a, const char *v)
+{
+    bool good;
+    if (strcmp(a, "--size") == 0) {
+        int w = 0, h = 0;
+        char extra;
+        good = (v && sscanf(v, "%dx%d%c", &w, &h, &extra) == 2 && w >= 16 && h >= 16 && w <= 8192 &&
+                h <= 8192) ||
+               usage_error("bad --size (WxH, 16..8192)", v);
+        o->width = w, o->height = h;
+    } else if (strcmp(a, "--frames") == 0) {
+        good = parse_int(v, 1, 100000, &o->frames) || usage_error("bad --frames", v);
+    } else if (strcmp(a, "--warmup") == 0) {
+        good = parse_int(v, 0, 100000, &o->warmup) || usage_error("bad --warmup", v);
+    } else if (strcmp(a, "--max-frame-ms") == 0) {
+        good = parse_double(v, 1, 1e9, &o->max_frame_ms) || usage_error("bad --max-frame-ms", v);
+    } else if (strcmp(a, "--case-budget-ms") == 0) {
+        good = parse_double(v, 1, 1e9, &o->case_budget_ms) || usage_error("bad --case-budget-ms", v);
+    } else if (strcmp(a, "--error-max-lights") == 0) {
+        good = parse_int(v, 0, 1 << 20, &o->error_max_lights) || usage_error("bad --error-max-lights", v);
+    } else {
+        return OPTION_UNKNOWN;
+    }
+    return option_result_of(good);
+}
+
+/* The options about files and the GL context. */
+static option_result parse_io_option(bench_options *o, const char *a, const char *v)
+{
+    bool good = true;
+    if (strcmp(a, "--scene-dir") == 0) {
+        good = (v && *v) || usage_error("bad --scene-dir", v);
+        o->scene_dir = v;
+    } else if (strcmp(a, "--out") == 0) {
+        good = (v && *v) || usage_error("bad --out", v);
+        o->out_dir = v;
+    } else if (strcmp(a, "--backend") == 0) {
+        if (v && strcmp(v, "egl") == 0)
+            o->backend = CLI_BACKEND_EGL;
+        else if (v && strcmp(v, "osmesa") == 0)
+            o->backend = CLI_BACKEND_OSMESA;
+        else
+            good = usage_error("bad --backend (egl or osmesa)", v);
+    } else {
+        return OPTION_UNKNOWN;
+    }
+    return option_result_of(good);
+}
+
+int bench_options_parse(int argc, char **argv, bench_options *out)
+{
+    bench_options *o = out;
+    set_defaults(o);
+    /* --quick first, so the options after it can still change what it set. */
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--quick") == 0)
+            set_quick(o);
+    bool have_cutoff_scene = false;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            bench_options_print_help(stdout);
+            return CLI_EXIT_DONE;
+        }
+        if (strcmp(a, "--quick") == 0)
+            continue;
+        if (strcmp(a, "--no-plots") == 0) {
+            o->plots = false;
+            continue;
+        }
+        option_result res = parse_sweep_option(o, a, v, &have_cutoff_scene);
+        if (res == OPTION_UNKNOWN)
+            res = parse_timing_option(o, a, v);
+        if (res == OPTION_UNKNOWN)
+            res = parse_io_option(o, a, v);
+        if (res == OPTION_UNKNOWN)
+            usage_error("unknown option", a);
+        if (res != OPTION_GOOD)
+            return CLI_EXIT_USAGE;
+        i++; /* the value */
+    }
+    if (o->min_frames > o->frames)
+        o->min_frames = o->frames;
+    if (!have_cutoff_scene)
+        snprintf(o->cutoff_scene, NAME_MAX_LEN, "%s", o->scenes[0]);
+    return CLI_EXIT_OK;
+}
+
+void bench_options_find_scene(const bench_options *options, const char *name, char *out, size_t size)
+{
+    size_t len = strlen(name);
+    if (strchr(name, '/') || (len > 6 && strcmp(name + len - 6, ".scene") == 0))
+        snprintf(out, size, "%s", name);
+    else
+        snprintf(out, size, "%s/%s.scene", options->scene_dir, name);
+}
+
+void bench_options_label_scene(const char *name, char *out, size_t size)
+{
+    const char *slash = strrchr(name, '/');
+    snprintf(out, size, "%s", slash ? slash + 1 : name);
+    char *dot = strrchr(out, '.');
+    if (dot && strcmp(dot, ".scene") == 0)
+        *dot = '\0';
+}

@@ -1,0 +1,29 @@
+/* bench_report.h - the benchmark's result files: every row as CSV for tools, and a Markdown page
+ * with the targets, the crossover and one table per question for people (docs/08_compare.md shows
+ * one). Every file is written to NAME.tmp and renamed into place, so a reader never sees half a file.
+ *
+ *   bench_report_write_csv(st)             OUT/bench.csv: one row per (case, renderer), NA where a
+ *                                          value was not measured; the columns are stable
+ *   bench_report_write_md(st)              OUT/bench.md
+ *   bench_report_open_tmp(dir, name, tmp, size)
+ *                                          DIR/NAME.tmp opened for writing, its path in tmp; NULL
+ *                                          on failure (logged)
+ *   bench_report_close_tmp(f, tmp, dir, name)
+ *                                          close f and rename tmp to DIR/NAME; on any failure
+ *                                          (logged) tmp is removed and false returned
+ */
+#ifndef TOOLS_BENCH_REPORT_H
+#define TOOLS_BENCH_REPORT_H
+
+#include "bench_state.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+
+bool bench_report_write_csv(const bench_state *st);
+bool bench_report_write_md(const bench_state *st);
+FILE *bench_report_open_tmp(const char *dir, const char *name, char *tmp, size_t size);
+bool bench_report_close_tmp(FILE *f, const char *tmp, const char *dir, const char *name);
+
+#endif

@@ -1,0 +1,346 @@
+/* bench_run.c - see bench_run.h. */
+#include "bench_run.h"
+
+#include "gl_util.h"
+#include "gpu_scene.h"
+#include "light.h"
+#include "log.h"
+#include "scene.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* What every step of a run works with. */
+typedef struct run_ctx {
+    bench_state *st;
+    bench_renderers *br;
+    bench_measure *m;
+} run_ctx;
+
+/* ---- prediction of slow cases ------------------------------------------------------------------ */
+
+/* Per renderer, the last two (lights, ms) of the current scene's light sweep. */
+typedef struct history {
+    int n[2];
+    double ms[2];
+    int count;
+} history;
+
+static double predict_ms(const history *h, int lights)
+{
+    if (h->count == 0)
+        return 0.0;
+    int n1 = h->n[h->count - 1];
+    double m1 = h->ms[h->count - 1];
+    if (h->count >= 2 && h->n[1] > h->n[0]) {
+        /* cost ~ a + b * lights through the last two points (never a falling line) */
+        double b = fmax((h->ms[1] - h->ms[0]) / (h->n[1] - h->n[0]), 0.0);
+        return m1 + b * (lights - n1);
+    }
+    return lights > n1 && n1 > 0 ? m1 * lights / n1 : m1;
+}
+
+static void history_add(history *h, int lights, double ms)
+{
+    if (h->count == 2)
+        h->n[0] = h->n[1], h->ms[0] = h->ms[1], h->count = 1;
+    h->n[h->count] = lights, h->ms[h->count] = ms;
+    h->count++;
+}
+
+/* ---- one case ---------------------------------------------------------------------------------- */
+
+typedef struct case_desc {
+    const char *sweep;
+    const char *scene_name;
+    bool own_lights;
+    int lights; /* the scene's light count */
+    double cutoff;
+    int renderers[MAX_LIST];
+    int renderer_count;
+    history *histories;          /* per renderer index, or NULL: no prediction (cut-off sweep) */
+    const history *predict_from; /* for the cut-off sweep: the light sweep's histories, may be NULL */
+} case_desc;
+
+/* Per renderer of a case, in the case's order. The rows are indices from first_row on, since adding
+ * rows moves them. */
+typedef struct case_plan {
+    int n, first_row;
+    int frames[MAX_LIST], warmup[MAX_LIST];
+    double *times[MAX_LIST]; /* frames[i] timed frames */
+} case_plan;
+
+static int compare_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+/* A case predicted over --max-frame-ms is not drawn: its time is the prediction. One predicted over
+ * --case-budget-ms gets fewer frames, so one slow renderer does not hold up the sweep. */
+static void plan_frames(const bench_options *o, const case_desc *c, bench_row *row, int *frames, int *warmup)
+{
+    int r = row->renderer;
+    const history *h = c->histories ? &c->histories[r] : c->predict_from ? &c->predict_from[r] : NULL;
+    double predicted = h ? predict_ms(h, c->lights) : 0.0;
+    *frames = o->frames, *warmup = o->warmup;
+    if (predicted > o->max_frame_ms) {
+        *frames = *warmup = 0;
+        row->status = BENCH_STATUS_SKIPPED;
+        row->median_ms = row->min_ms = row->max_ms = predicted;
+        snprintf(row->note, sizeof row->note, "skipped: predicted %.0f ms/frame > %.0f; time extrapolated",
+                 predicted, o->max_frame_ms);
+    } else if (predicted * (o->frames + o->warmup) > o->case_budget_ms) {
+        int f = (int)(o->case_budget_ms / fmax(predicted, 1.0));
+        *frames = f < o->min_frames ? o->min_frames : f > o->frames ? o->frames : f;
+        *warmup = 1;
+        row->status = *frames < o->frames ? BENCH_STATUS_FEW_FRAMES : BENCH_STATUS_MEASURED;
+        if (row->status == BENCH_STATUS_FEW_FRAMES)
+            snprintf(row->note, sizeof row->note, "slow: %d frames instead of %d", *frames, o->frames);
+    }
+    row->frames = *frames, row->warmup = *warmup;
+}
+
+/* One row per renderer; p->times is all NULL or allocated, also on failure. */
+static bool plan_case(run_ctx *x, const gpu_scene *gs, const case_desc *c, case_plan *p)
+{
+    memset(p, 0, sizeof *p);
+    p->n = c->renderer_count;
+    p->first_row = x->st->row_count;
+    for (int i = 0; i < p->n; i++) {
+        bench_row *row = bench_state_add_row(x->st);
+        if (!row)
+            return false;
+        row->sweep = c->sweep;
+        snprintf(row->scene, sizeof row->scene, "%s", c->scene_name);
+        row->renderer = c->renderers[i];
+        row->own_lights = c->own_lights;
+        row->lights = c->lights;
+        row->active_lights = gs->light_count;
+        row->cutoff = c->cutoff;
+        plan_frames(&x->st->opt, c, row, &p->frames[i], &p->warmup[i]);
+        if (p->frames[i] > 0 && !(p->times[i] = malloc((size_t)p->frames[i] * sizeof(double)))) {
+            log_error("out of memory for frame times");
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Warm-up, then the timed frames, renderer after renderer within each round. */
+static bool time_case(run_ctx *x, gpu_scene *gs, const case_desc *c, case_plan *p)
+{
+    const bench_options *o = &x->st->opt;
+    int rounds = 0;
+    for (int i = 0; i < p->n; i++)
+        rounds = p->frames[i] + p->warmup[i] > rounds ? p->frames[i] + p->warmup[i] : rounds;
+    bool ok = true;
+    for (int k = 0; k < rounds && ok; k++) {
+        for (int i = 0; i < p->n && ok; i++) {
+            /* Warm-up frames are spread over the first rounds; then timed frames follow. */
+            if (k >= p->frames[i] + p->warmup[i])
+                continue;
+            double t0 = bench_measure_now_ms();
+            ok = gpu_scene_update(gs, 0.0f, c->cutoff, o->width, o->height) &&
+                 bench_render_frame(x->br, c->renderers[i], gs, false, NULL);
+            glFinish();
+            double ms = bench_measure_now_ms() - t0;
+            if (k >= p->warmup[i])
+                p->times[i][k - p->warmup[i]] = ms;
+        }
+    }
+    return ok;
+}
+
+/* Median, min and max into the rows; the light sweep's medians feed the prediction. */
+static void summarise_times(run_ctx *x, const case_desc *c, case_plan *p)
+{
+    for (int i = 0; i < p->n; i++) {
+        bench_row *row = &x->st->rows[p->first_row + i];
+        int f = p->frames[i];
+        double *t = p->times[i];
+        if (f > 0) {
+            qsort(t, (size_t)f, sizeof(double), compare_double);
+            row->median_ms = f % 2 ? t[f / 2] : 0.5 * (t[f / 2 - 1] + t[f / 2]);
+            row->min_ms = t[0];
+            row->max_ms = t[f - 1];
+        }
+        if (c->histories)
+            history_add(&c->histories[row->renderer], c->lights, row->median_ms);
+    }
+}
+
+static void free_times(case_plan *p)
+{
+    for (int i = 0; i < p->n; i++) {
+        free(p->times[i]);
+        p->times[i] = NULL;
+    }
+}
+
+/* Work and error: one untimed frame per renderer that was not skipped. */
+static bool measure_case(run_ctx *x, gpu_scene *gs, const case_desc *c, const case_plan *p)
+{
+    const bench_options *o = &x->st->opt;
+    char key[BENCH_KEY_LEN];
+    snprintf(key, sizeof key, "%s/%d/%d", c->scene_name, c->own_lights, c->lights);
+    /* The cut-off sweep is about error: it always measures it. */
+    bool want_error = c->lights <= o->error_max_lights || strcmp(c->sweep, "cutoff") == 0;
+    if (want_error && !bench_measure_make_reference(x->m, x->br, gs, key, c->cutoff))
+        return false;
+    bench_ideal ideal;
+    if (!bench_measure_count_ideal(x->m, x->br, gs, &ideal))
+        return false;
+    for (int i = 0; i < p->n; i++) {
+        bench_row *row = &x->st->rows[p->first_row + i];
+        row->covered = ideal.covered;
+        row->ideal = ideal.ideal;
+        if (row->status == BENCH_STATUS_SKIPPED)
+            continue;
+        if (!bench_measure_fill_row(x->m, x->br, gs, want_error, row))
+            return false;
+    }
+    return true;
+}
+
+static void print_case(const bench_state *st, const case_plan *p)
+{
+    for (int i = 0; i < p->n; i++) {
+        const bench_row *row = &st->rows[p->first_row + i];
+        fprintf(stderr, "bench: case %d/%d %-22s %-8s lights %5d%s cut-off %6.3f/256: %9.2f ms%s\n",
+                st->case_index, st->case_total, bench_renderer_name(row->renderer), row->scene, row->lights,
+                row->own_lights ? " (scene's)" : "", row->cutoff * 256.0, row->median_ms,
+                row->status == BENCH_STATUS_SKIPPED      ? " (skipped, extrapolated)"
+                : row->status == BENCH_STATUS_FEW_FRAMES ? " (few frames)"
+                                                         : "");
+    }
+}
+
+static bool run_case(run_ctx *x, gpu_scene *gs, const case_desc *c)
+{
+    const bench_options *o = &x->st->opt;
+    if (!gpu_scene_update(gs, 0.0f, c->cutoff, o->width, o->height))
+        return false;
+    case_plan p;
+    bool ok = plan_case(x, gs, c, &p) && time_case(x, gs, c, &p);
+    if (ok)
+        summarise_times(x, c, &p);
+    free_times(&p);
+    if (!ok || !measure_case(x, gs, c, &p))
+        return false;
+    x->st->case_index++;
+    print_case(x->st, &p);
+    return gl_check("run_case");
+}
+
+/* ---- scenes ------------------------------------------------------------------------------------ */
+
+/* gs is built from gen; pointing it at own for the scene's own lights is safe because the two are
+ * loads of the same file and share every mesh and object. */
+static bool run_light_sweep(run_ctx *x, gpu_scene *gs, scene *own, scene *gen, const char *label,
+                            history *histories)
+{
+    const bench_options *o = &x->st->opt;
+    bool ok = true;
+    for (int k = 0; ok && k < o->light_list_count; k++) {
+        bool use_own = o->lights[k] == LIGHTS_OWN;
+        case_desc c = {.sweep = "lights",
+                       .scene_name = label,
+                       .own_lights = use_own,
+                       .cutoff = LIGHT_DEFAULT_CUTOFF,
+                       .renderer_count = o->renderer_count,
+                       .histories = use_own ? NULL : histories,
+                       .predict_from = histories};
+        memcpy(c.renderers, o->renderers, sizeof c.renderers);
+        if (use_own) {
+            gs->src = own;
+            c.lights = own->light_count;
+        } else {
+            gs->src = gen;
+            ok = light_generate(gen, o->lights[k], o->seed);
+            c.lights = o->lights[k];
+        }
+        ok = ok && run_case(x, gs, &c);
+        gs->src = gen;
+    }
+    return ok;
+}
+
+static bool run_cutoff_sweep(run_ctx *x, gpu_scene *gs, scene *gen, const char *label,
+                             const history *predict_from)
+{
+    const bench_options *o = &x->st->opt;
+    bool ok = true;
+    for (int k = 0; ok && k < o->cutoff_count; k++) {
+        case_desc c = {.sweep = "cutoff",
+                       .scene_name = label,
+                       .lights = o->cutoff_lights,
+                       .cutoff = o->cutoffs[k] / 256.0,
+                       .predict_from = predict_from};
+        for (int i = 0; i < o->renderer_count; i++)
+            if (bench_renderer_in_cutoff_sweep(o->renderers[i]))
+                c.renderers[c.renderer_count++] = o->renderers[i];
+        ok = light_generate(gen, o->cutoff_lights, o->seed) && run_case(x, gs, &c);
+    }
+    return ok;
+}
+
+/* Both sweeps of one scene. `own` keeps the file's lights; `gen` gets light_generate's. */
+static bool run_scene(run_ctx *x, const char *name, bool light_sweep, bool cutoff_sweep, history *histories)
+{
+    char path[SCENE_PATH_MAX], label[NAME_MAX_LEN];
+    bench_options_find_scene(&x->st->opt, name, path, sizeof path);
+    bench_options_label_scene(name, label, sizeof label);
+    scene own, gen;
+    if (!scene_load(path, &own))
+        return false;
+    if (!scene_load(path, &gen)) {
+        scene_destroy(&own);
+        return false;
+    }
+    gpu_scene gs;
+    bool ok = gpu_scene_create(&gen, &gs);
+    for (int r = 0; r < bench_renderer_count(); r++)
+        histories[r].count = 0;
+    if (ok && light_sweep)
+        ok = run_light_sweep(x, &gs, &own, &gen, label, histories);
+    if (ok && cutoff_sweep)
+        ok = run_cutoff_sweep(x, &gs, &gen, label, light_sweep ? histories : NULL);
+    gpu_scene_destroy(&gs);
+    scene_destroy(&gen);
+    scene_destroy(&own);
+    bench_measure_forget_reference(x->m);
+    return ok;
+}
+
+/* ---- all cases --------------------------------------------------------------------------------- */
+
+int bench_run_count_cases(const bench_options *options)
+{
+    return options->scene_count * options->light_list_count + options->cutoff_count;
+}
+
+/* The cut-off sweep runs with the light sweep of its scene, whose times predict its slow cases. */
+bool bench_run_all(bench_state *st, bench_renderers *br, bench_measure *m)
+{
+    run_ctx x = {st, br, m};
+    const bench_options *o = &st->opt;
+    history histories[BENCH_RENDERER_MAX];
+    memset(histories, 0, sizeof histories);
+    char want[NAME_MAX_LEN];
+    bench_options_label_scene(o->cutoff_scene, want, sizeof want);
+    bool cutoff_done = false;
+    for (int s = 0; s < o->scene_count; s++) {
+        char label[NAME_MAX_LEN];
+        bench_options_label_scene(o->scenes[s], label, sizeof label);
+        bool cutoff_here = !cutoff_done && strcmp(label, want) == 0;
+        if (!run_scene(&x, o->scenes[s], true, cutoff_here, histories))
+            return false;
+        cutoff_done = cutoff_done || cutoff_here;
+    }
+    if (!cutoff_done && !run_scene(&x, o->cutoff_scene, false, true, histories))
+        return false;
+    return true;
+}
