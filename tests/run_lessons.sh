@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# run_lessons.sh ROOT - each lesson's GL call appears first in the chapter that teaches it, so a
+# reader who greps the chapters in order lands on the stage that introduces it.
+set -u
+root=$1
+status=0
+expect_first() { # STRING CHAPTER
+  local first
+  first=$(grep -lF -- "$1" "$root"/chapters/[0-9][0-9]_*.c | sort | head -n 1)
+  if [ "$(basename "${first:-none}")" = "$2" ]; then
+    echo "ok   '$1' first in $2"
+  else
+    echo "FAIL '$1' first in ${first:-no chapter}, expected $2"
+    status=1
+  fi
+}
+expect_first "glDrawElementsInstanced" 04_light_volumes.c
+expect_first "FIXED_RADIUS" 04_light_volumes.c
+expect_first "light_volumes_sort" 05_attenuation_radius.c
+expect_first "GL_ONE, GL_ONE" 06_additive_blending.c
+expect_first "GL_RGBA16F" 06_additive_blending.c
+expect_first "GL_GREATER" 07_face_culling.c
+expect_first "GL_DEPTH_CLAMP" 07_face_culling.c
+expect_first "forward_draw_depth" 00_forward.c
+expect_first "glCheckFramebufferStatus" 01_fbo_setup.c
+# No lesson behind a flag in common/: the old option structs are gone.
+if grep -n "light_volumes_options\|overwrite\b" "$root"/common/*.[ch]; then
+  echo "FAIL a chapter's lesson is selected by an option in common/"
+  status=1
+fi
+exit $status
