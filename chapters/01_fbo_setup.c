@@ -91,9 +91,9 @@ static bool frame(app *a)
     glViewport(0, 0, a->width, a->height);
     glDisable(GL_DEPTH_TEST);
     glUseProgram(state.present_program);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
     glBindTexture(GL_TEXTURE_2D, state.color);
-    glUniform1i(glGetUniformLocation(state.present_program, "u_image"), 0);
+    glUniform1i(glGetUniformLocation(state.present_program, "u_image"), SHADER_UNIT_IMAGE);
     gl_draw_fullscreen();
     glBindTexture(GL_TEXTURE_2D, 0);
     return gl_check("present");

@@ -62,8 +62,8 @@ static bool draw_view(const app *a)
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
     glDisable(GL_DEPTH_TEST);
-    gbuffer_bind_textures(&state.gbuf, &a->gs, state.view_program, 0);
-    glUniform1i(state.loc_view, a->view);
+    gbuffer_bind_textures(&state.gbuf, &a->gs, state.view_program, SHADER_UNIT_GBUFFER);
+    glUniform1i(state.loc_view, SHADER_GBUFFER_VIEW_ALBEDO + a->view); /* views[] is in SHADER_GBUFFER_VIEW_* order */
     glUniform2f(state.loc_near_far, a->gs.view.near_plane, a->gs.view.far_plane);
     gl_draw_fullscreen();
     return gl_check("draw_view");

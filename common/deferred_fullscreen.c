@@ -33,8 +33,8 @@ bool deferred_fullscreen_render(deferred_fullscreen *d, const gbuffer *g, const 
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     glUseProgram(d->program);
-    gpu_scene_bind_lights(gs, d->program, 0);
-    gbuffer_bind_textures(g, gs, d->program, 1);
+    gpu_scene_bind_lights(gs, d->program, SHADER_UNIT_LIGHTS);
+    gbuffer_bind_textures(g, gs, d->program, SHADER_UNIT_GBUFFER);
     gl_samples_begin(d->query, options.count_pixels);
     gl_draw_fullscreen();
     d->shaded_pixels = gl_samples_end(d->query, options.count_pixels);

@@ -65,9 +65,9 @@ static void present(const deferred_volumes *dv, GLuint target, const deferred_vo
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, dv->accum.width, dv->accum.height);
     glUseProgram(dv->present_program);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
     glBindTexture(GL_TEXTURE_2D, dv->accum.color[0]);
-    glUniform1i(dv->u_accum, 0);
+    glUniform1i(dv->u_accum, SHADER_UNIT_IMAGE);
     glUniform1i(dv->u_tonemap, (int)f->tonemap);
     glUniform1f(dv->u_exposure, f->exposure > 0.0f ? f->exposure : 1.0f);
     gl_draw_fullscreen();

@@ -22,9 +22,9 @@
 #include "light_volumes.h"
 
 typedef enum deferred_volumes_tonemap {
-    DEFERRED_VOLUMES_TONEMAP_NONE,     /* clamp at 1: the forward renderer's transform */
-    DEFERRED_VOLUMES_TONEMAP_EXPOSURE, /* scale by the exposure, then clamp */
-    DEFERRED_VOLUMES_TONEMAP_REINHARD, /* x / (1 + x) after the exposure: never clips */
+    DEFERRED_VOLUMES_TONEMAP_NONE = SHADER_TONEMAP_NONE,         /* clamp at 1: forward's transform */
+    DEFERRED_VOLUMES_TONEMAP_EXPOSURE = SHADER_TONEMAP_EXPOSURE, /* scale by the exposure, then clamp */
+    DEFERRED_VOLUMES_TONEMAP_REINHARD = SHADER_TONEMAP_REINHARD, /* x / (1 + x) after it: never clips */
 } deferred_volumes_tonemap;
 
 typedef struct deferred_volumes_frame {

@@ -83,7 +83,7 @@ bool forward_build_light_lists(forward *f, const gpu_scene *gs)
 void forward_draw_depth(const forward *f, const gpu_scene *gs)
 {
     glUseProgram(f->depth_program);
-    gpu_scene_bind_objects(gs, f->depth_program, FORWARD_UNIT_OBJECTS);
+    gpu_scene_bind_objects(gs, f->depth_program, SHADER_UNIT_OBJECTS);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     gpu_scene_draw(gs, f->depth_program);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -103,12 +103,12 @@ bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options option
     if (!program)
         return false;
     glUseProgram(program);
-    gpu_scene_bind_lights(gs, program, FORWARD_UNIT_LIGHTS);
-    gpu_scene_bind_objects(gs, program, FORWARD_UNIT_OBJECTS);
-    glActiveTexture(GL_TEXTURE0 + FORWARD_UNIT_LISTS);
+    gpu_scene_bind_lights(gs, program, SHADER_UNIT_LIGHTS);
+    gpu_scene_bind_objects(gs, program, SHADER_UNIT_OBJECTS);
+    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_LIGHT_LIST);
     glBindTexture(GL_TEXTURE_BUFFER, f->list_texture);
     glActiveTexture(GL_TEXTURE0);
-    glUniform1i(glGetUniformLocation(program, "u_light_list"), FORWARD_UNIT_LISTS);
+    glUniform1i(glGetUniformLocation(program, "u_light_list"), SHADER_UNIT_LIGHT_LIST);
     glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);
     glUniform1i(glGetUniformLocation(program, "u_use_list"), options.light_lists);
     gl_samples_begin(f->query, options.count_pixels);

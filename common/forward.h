@@ -28,9 +28,6 @@
 
 #include "gpu_scene.h"
 
-/* Texture units of the forward passes. */
-enum { FORWARD_UNIT_LIGHTS = 0, FORWARD_UNIT_LISTS = 1, FORWARD_UNIT_OBJECTS = 2 };
-
 typedef struct forward_options {
     bool prepass;
     bool light_lists;

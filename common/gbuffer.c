@@ -67,7 +67,7 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
     glEnable(GL_FRAMEBUFFER_SRGB);
 
     glUseProgram(g->program);
-    gpu_scene_bind_objects(gs, g->program, 0);
+    gpu_scene_bind_objects(gs, g->program, SHADER_UNIT_OBJECTS);
     gpu_scene_draw(gs, g->program);
 
     glDisable(GL_FRAMEBUFFER_SRGB);

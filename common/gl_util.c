@@ -2,6 +2,7 @@
 #include "gl_util.h"
 
 #include "log.h"
+#include "shader_layout.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -103,8 +104,21 @@ static bool append_file(source_text *s, const char *name, const char *defines, i
     return ok;
 }
 
+/* shader_layout.h's constants as #defines: the shaders read the numbers the C code writes. */
+static bool append_layout(source_text *s)
+{
+    bool ok = true;
+    char line[96];
+#define APPEND_DEFINE(name, value)                                                                          \
+    snprintf(line, sizeof line, "#define SHADER_%s %d\n", #name, value);                                   \
+    ok = ok && text_append(s, line, strlen(line));
+    SHADER_LAYOUT(APPEND_DEFINE)
+#undef APPEND_DEFINE
+    return ok;
+}
+
 /* Appends `text` (named `label` in error messages), expanding its #include lines; the top-level
- * source keeps its #version line first, then the defines. */
+ * source keeps its #version line first, then the defines and shader_layout.h's constants. */
 static bool append_source(source_text *s, const char *label, const char *text, const char *defines, int depth)
 {
     if (depth > 4 || s->count >= MAX_SOURCES) {
@@ -137,7 +151,7 @@ static bool append_source(source_text *s, const char *label, const char *text, c
                         ok = text_append(s, "#define ", 8) && text_append(s, d, dn) && text_append(s, "\n", 1);
                         d = e ? e + 1 : d + dn;
                     }
-                    ok = ok && text_printf(s, "#line %d %d\n", 2, id);
+                    ok = ok && append_layout(s) && text_printf(s, "#line %d %d\n", 2, id);
                 }
             }
         }

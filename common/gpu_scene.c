@@ -38,7 +38,7 @@ bool gpu_scene_create(const scene *src, gpu_scene *out)
     out->normal_matrix = calloc((size_t)src->object_count + 1, sizeof *out->normal_matrix);
     out->bounds = calloc((size_t)src->object_count + 1, sizeof *out->bounds);
     out->batches = calloc((size_t)src->object_count + 1, sizeof *out->batches);
-    out->object_texels = calloc(((size_t)src->object_count + 1) * GPU_OBJECT_TEXELS * 4, sizeof(float));
+    out->object_texels = calloc(((size_t)src->object_count + 1) * SHADER_OBJECT_TEXELS * 4, sizeof(float));
     if (!out->meshes || !out->world || !out->normal_matrix || !out->bounds || !out->batches ||
         !out->object_texels) {
         log_error("out of memory for the scene's %d objects", src->object_count);
@@ -120,17 +120,20 @@ static void update_objects(gpu_scene *gs, float time)
         gs->bounds[i][2] = gs->world[i][3][2];
         gs->bounds[i][3] = gs->meshes[o->mesh].bound_radius * smax;
 
-        float *t = gs->object_texels + (size_t)i * GPU_OBJECT_TEXELS * 4;
+        float *t = gs->object_texels + (size_t)i * SHADER_OBJECT_TEXELS * 4;
         memcpy(t, gs->world[i], 16 * sizeof(float));
         for (int c = 0; c < 3; c++) {
-            memcpy(t + 16 + 4 * c, gs->normal_matrix[i][c], 3 * sizeof(float));
-            t[16 + 4 * c + 3] = 0.0f;
+            float *column = t + 4 * (SHADER_OBJECT_TEXEL_NORMAL + c);
+            memcpy(column, gs->normal_matrix[i][c], 3 * sizeof(float));
+            column[3] = 0.0f;
         }
         const scene_material *m = &s->materials[o->material];
-        const float material[8] = {m->albedo[0], m->albedo[1], m->albedo[2], m->specular, m->shininess, 0, 0, 0};
-        memcpy(t + 28, material, sizeof material);
+        const float material[4] = {m->albedo[0], m->albedo[1], m->albedo[2], m->specular};
+        const float shininess[4] = {m->shininess, 0, 0, 0};
+        memcpy(t + 4 * SHADER_OBJECT_TEXEL_MATERIAL, material, sizeof material);
+        memcpy(t + 4 * SHADER_OBJECT_TEXEL_SHININESS, shininess, sizeof shininess);
     }
-    size_t bytes = ((size_t)s->object_count + 1) * GPU_OBJECT_TEXELS * 4 * sizeof(float);
+    size_t bytes = ((size_t)s->object_count + 1) * SHADER_OBJECT_TEXELS * 4 * sizeof(float);
     glBindBuffer(GL_TEXTURE_BUFFER, gs->object_buffer);
     glBufferData(GL_TEXTURE_BUFFER, (GLsizeiptr)bytes, gs->object_texels, GL_STREAM_DRAW);
     glBindTexture(GL_TEXTURE_BUFFER, gs->object_texture);
@@ -144,7 +147,7 @@ static bool update_lights(gpu_scene *gs, float time, double cutoff)
     const scene *s = gs->src;
     if (s->light_count > 0) {
         gpu_light *l = realloc(gs->lights, (size_t)s->light_count * sizeof *l);
-        float *t = realloc(gs->texels, (size_t)s->light_count * GPU_LIGHT_TEXELS * 4 * sizeof *t);
+        float *t = realloc(gs->texels, (size_t)s->light_count * SHADER_LIGHT_TEXELS * 4 * sizeof *t);
         if (l)
             gs->lights = l;
         if (t)
@@ -163,7 +166,7 @@ static bool update_lights(gpu_scene *gs, float time, double cutoff)
             continue;
         }
         gpu_light *l = &gs->lights[gs->light_count];
-        float *t = gs->texels + (size_t)gs->light_count * GPU_LIGHT_TEXELS * 4;
+        float *t = gs->texels + (size_t)gs->light_count * SHADER_LIGHT_TEXELS * 4;
         gs->light_count++;
         scene_light_position_at(s, i, time, l->position);
         if (isinf(r) || r > FLT_MAX)
@@ -172,14 +175,14 @@ static bool update_lights(gpu_scene *gs, float time, double cutoff)
         glm_vec3_scale((float *)src->color, src->intensity, l->radiance);
         l->attenuation[0] = src->kc, l->attenuation[1] = src->kl, l->attenuation[2] = src->kq;
         l->source = i;
-        const float texels[GPU_LIGHT_TEXELS * 4] = {
+        const float texels[SHADER_LIGHT_TEXELS * 4] = {
             l->position[0], l->position[1], l->position[2], l->radius, l->radiance[0], l->radiance[1],
             l->radiance[2], 0.0f, src->kc, src->kl, src->kq, 0.0f};
         memcpy(t, texels, sizeof texels);
     }
     /* A texture buffer may not be empty: keep one texel so the binding stays valid with 0 lights. */
     static const float zero[4] = {0};
-    size_t bytes = (size_t)gs->light_count * GPU_LIGHT_TEXELS * 4 * sizeof(float);
+    size_t bytes = (size_t)gs->light_count * SHADER_LIGHT_TEXELS * 4 * sizeof(float);
     glBindBuffer(GL_TEXTURE_BUFFER, gs->light_buffer);
     glBufferData(GL_TEXTURE_BUFFER, bytes ? (GLsizeiptr)bytes : (GLsizeiptr)sizeof zero,
                  bytes ? (const void *)gs->texels : zero, GL_STREAM_DRAW);

@@ -13,10 +13,8 @@
  *   gpu_scene_draw(gs, program)      every object: one instanced draw per batch of consecutive
  *                                    objects that share a mesh (the city's 2,490 cubes are one draw)
  *
- * Light texels (RGBA32F, three per light): position.xyz + radius, radiance (I*colour) + 0,
- * attenuation kc kl kq + 0. An infinite radius is stored as FLT_MAX.
- * Object texels (RGBA32F, GPU_OBJECT_TEXELS per object): the world matrix's four columns, the
- * normal matrix's three columns, albedo + specular, shininess. shaders/forward.vert reads them
+ * Light and object texels: the layout in shader_layout.h (SHADER_LIGHT_TEXELS per light,
+ * SHADER_OBJECT_TEXELS per object). An infinite radius is stored as FLT_MAX. forward.vert reads them
  * for object u_first_object + gl_InstanceID, so a draw call costs the same for one cube or 2,490.
  */
 #ifndef COMMON_GPU_SCENE_H
@@ -24,11 +22,10 @@
 
 #include "mesh.h"
 #include "scene.h"
+#include "shader_layout.h"
 
 #include <cglm/cglm.h>
 
-#define GPU_LIGHT_TEXELS 3
-#define GPU_OBJECT_TEXELS 9
 
 typedef struct frame_view {
     int width, height;

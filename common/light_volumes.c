@@ -10,9 +10,6 @@
 /* 80 triangles: measured fastest on llvmpipe (vertex work is not free; 320 was slower). */
 #define VOLUME_SUBDIVISIONS 1
 
-/* Texture units of the lighting pass. */
-enum { UNIT_LIGHTS = 0, UNIT_GBUFFER = 1, UNIT_INDEX = 4 };
-
 static bool load_programs(light_volumes *lv, const char *defines)
 {
     lv->program = gl_program_load("light_volume.vert", "light_volume.frag", defines);
@@ -61,20 +58,20 @@ void light_volumes_destroy(light_volumes *lv)
 void light_volumes_draw_ambient(const light_volumes *lv, const gbuffer *g, const gpu_scene *gs)
 {
     glUseProgram(lv->ambient_program);
-    gpu_scene_bind_lights(gs, lv->ambient_program, UNIT_LIGHTS);
-    gbuffer_bind_textures(g, gs, lv->ambient_program, UNIT_GBUFFER);
+    gpu_scene_bind_lights(gs, lv->ambient_program, SHADER_UNIT_LIGHTS);
+    gbuffer_bind_textures(g, gs, lv->ambient_program, SHADER_UNIT_GBUFFER);
     gl_draw_fullscreen();
 }
 
 void light_volumes_bind(const light_volumes *lv, const gbuffer *g, const gpu_scene *gs, light_volumes_view view)
 {
     glUseProgram(lv->program);
-    gpu_scene_bind_lights(gs, lv->program, UNIT_LIGHTS);
-    gbuffer_bind_textures(g, gs, lv->program, UNIT_GBUFFER);
-    glActiveTexture(GL_TEXTURE0 + UNIT_INDEX);
+    gpu_scene_bind_lights(gs, lv->program, SHADER_UNIT_LIGHTS);
+    gbuffer_bind_textures(g, gs, lv->program, SHADER_UNIT_GBUFFER);
+    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_LIGHT_INDEX);
     glBindTexture(GL_TEXTURE_BUFFER, lv->index_texture);
     glActiveTexture(GL_TEXTURE0);
-    glUniform1i(lv->u_light_index, UNIT_INDEX);
+    glUniform1i(lv->u_light_index, SHADER_UNIT_LIGHT_INDEX);
     glUniformMatrix4fv(lv->u_view_proj, 1, GL_FALSE, (const float *)gs->view.view_proj);
     glUniform1f(lv->u_mesh_scale, lv->mesh_scale);
     glUniform1i(lv->u_view, (int)view);

@@ -30,9 +30,9 @@
 #include "mesh.h"
 
 typedef enum light_volumes_view {
-    LIGHT_VOLUMES_VIEW_LIT,      /* the shaded picture */
-    LIGHT_VOLUMES_VIEW_RING,     /* plus a line where each light's cut-off sphere meets a surface */
-    LIGHT_VOLUMES_VIEW_OVERDRAW, /* grey level = lighting fragments per pixel (1/16 each) */
+    LIGHT_VOLUMES_VIEW_LIT = SHADER_VIEW_LIT,           /* the shaded picture */
+    LIGHT_VOLUMES_VIEW_RING = SHADER_VIEW_RING,         /* plus a line where each cut-off sphere meets a surface */
+    LIGHT_VOLUMES_VIEW_OVERDRAW = SHADER_VIEW_OVERDRAW, /* grey level = lighting fragments per pixel (1/16 each) */
 } light_volumes_view;
 
 typedef struct light_volumes {

@@ -4,7 +4,7 @@
 #include "shading.glsl"
 
 uniform sampler2D u_accum;
-uniform int u_tonemap;    // 0 none (clamp), 1 exposure, 2 Reinhard (light_volumes_tonemap)
+uniform int u_tonemap;    // SHADER_TONEMAP_NONE (clamp), _EXPOSURE or _REINHARD
 uniform float u_exposure;
 
 out vec4 o_color;
@@ -12,9 +12,9 @@ out vec4 o_color;
 void main()
 {
     vec3 c = texelFetch(u_accum, ivec2(gl_FragCoord.xy), 0).rgb;
-    if (u_tonemap >= 1)
+    if (u_tonemap != SHADER_TONEMAP_NONE)
         c *= u_exposure;
-    if (u_tonemap == 2)
+    if (u_tonemap == SHADER_TONEMAP_REINHARD)
         c = c / (1.0 + c);
     o_color = vec4(display_encode(c), 1.0);
 }

@@ -22,17 +22,16 @@ flat out float v_specular;
 flat out float v_shininess;
 invariant gl_Position;
 
-const int OBJECT_TEXELS = 9;
-
 void main()
 {
     int object = u_first_object + gl_InstanceID;
-    int t = OBJECT_TEXELS * object;
+    int t = SHADER_OBJECT_TEXELS * object; // layout: common/shader_layout.h
     mat4 model = mat4(texelFetch(u_objects, t), texelFetch(u_objects, t + 1), texelFetch(u_objects, t + 2),
                       texelFetch(u_objects, t + 3));
-    mat3 normal_matrix = mat3(texelFetch(u_objects, t + 4).xyz, texelFetch(u_objects, t + 5).xyz,
-                              texelFetch(u_objects, t + 6).xyz);
-    vec4 material = texelFetch(u_objects, t + 7);
+    int n = t + SHADER_OBJECT_TEXEL_NORMAL;
+    mat3 normal_matrix = mat3(texelFetch(u_objects, n).xyz, texelFetch(u_objects, n + 1).xyz,
+                              texelFetch(u_objects, n + 2).xyz);
+    vec4 material = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MATERIAL);
 
     vec4 world = model * vec4(a_position, 1.0);
     v_world = world.xyz;
@@ -40,6 +39,6 @@ void main()
     v_object = object;
     v_albedo = material.rgb;
     v_specular = material.a;
-    v_shininess = texelFetch(u_objects, t + 8).r;
+    v_shininess = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_SHININESS).r;
     gl_Position = u_view_proj * world;
 }

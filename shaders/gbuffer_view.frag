@@ -4,10 +4,6 @@
 #include "shading.glsl"
 #include "gbuffer_read.glsl"
 
-#define VIEW_ALBEDO 0
-#define VIEW_NORMAL 1
-#define VIEW_DEPTH 2
-#define VIEW_SPECULAR 3
 
 uniform int u_view;
 uniform vec2 u_near_far;
@@ -27,17 +23,17 @@ void main()
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     surface s = gbuffer_read(ivec2(gl_FragCoord.xy));
     vec3 c = vec3(0.0);
-    if (u_view == VIEW_ALBEDO) {
+    if (u_view == SHADER_GBUFFER_VIEW_ALBEDO) {
         c = display_encode(s.albedo);
-    } else if (u_view == VIEW_NORMAL) {
+    } else if (u_view == SHADER_GBUFFER_VIEW_NORMAL) {
         c = s.normal * 0.5 + 0.5; // world-space axes: +x red, +y green, +z blue
-    } else if (u_view == VIEW_DEPTH) {
+    } else if (u_view == SHADER_GBUFFER_VIEW_DEPTH) {
         float z = linear_depth(texelFetch(u_gbuffer_depth, pixel, 0).r);
         c = vec3((z - u_near_far.x) / (u_near_far.y - u_near_far.x)); // near black, far white
-    } else if (u_view == VIEW_SPECULAR) {
+    } else if (u_view == SHADER_GBUFFER_VIEW_SPECULAR) {
         c = vec3(s.specular);
     }
-    if (s.background && u_view != VIEW_DEPTH)
+    if (s.background && u_view != SHADER_GBUFFER_VIEW_DEPTH)
         c = vec3(0.0);
     o_color = vec4(c, 1.0);
 }

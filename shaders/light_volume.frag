@@ -14,7 +14,7 @@ flat in vec3 v_light_radiance;
 flat in vec3 v_light_attenuation;
 flat in float v_volume_radius;
 
-uniform int u_view; // 0 lit, 1 lit + cut-off ring, 2 overdraw (light_volumes_view)
+uniform int u_view; // SHADER_VIEW_LIT, _RING (lit + cut-off ring) or _OVERDRAW
 
 out vec4 o_color;
 
@@ -28,9 +28,9 @@ void main()
     float d = length(v_light_position - position);
     // Derivatives while every fragment is still running (u_view is uniform: the branch is too).
     float ring_width = 0.0;
-    if (u_view == 1)
+    if (u_view == SHADER_VIEW_RING)
         ring_width = 1.5 * fwidth(d);
-    if (u_view == 2) {
+    if (u_view == SHADER_VIEW_OVERDRAW) {
         o_color = vec4(vec3(depth < 1.0 ? 1.0 / 16.0 : 0.0), 1.0);
         return;
     }
@@ -50,7 +50,7 @@ void main()
 #ifdef OVERWRITE
     c += shade_ambient(s.albedo);
 #endif
-    if (u_view == 1 && v_volume_radius - d < ring_width)
+    if (u_view == SHADER_VIEW_RING && v_volume_radius - d < ring_width)
         c += L.radiance / max(max(L.radiance.r, L.radiance.g), max(L.radiance.b, 1e-6));
 #ifdef OVERWRITE
     c = display_encode(c);

@@ -1,7 +1,7 @@
 // shading.glsl - the one shading model every renderer uses (docs/00_forward.md has the formulas).
 // Included by forward.frag and every deferred lighting shader, never copied.
 
-uniform samplerBuffer u_lights; // three RGBA32F texels per light: pos+radius, radiance, attenuation
+uniform samplerBuffer u_lights; // SHADER_LIGHT_TEXELS RGBA32F texels per light (common/shader_layout.h)
 uniform int u_light_count;
 uniform vec3 u_ambient;
 
@@ -14,9 +14,10 @@ struct light_data {
 
 light_data light_fetch(int i)
 {
-    vec4 a = texelFetch(u_lights, 3 * i);
-    vec4 b = texelFetch(u_lights, 3 * i + 1);
-    vec4 c = texelFetch(u_lights, 3 * i + 2);
+    int t = SHADER_LIGHT_TEXELS * i;
+    vec4 a = texelFetch(u_lights, t);
+    vec4 b = texelFetch(u_lights, t + 1);
+    vec4 c = texelFetch(u_lights, t + 2);
     return light_data(a.xyz, a.w, b.rgb, c.xyz);
 }
 

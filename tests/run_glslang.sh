@@ -21,14 +21,19 @@ expand() { # expand FILE DEPTH
   done < "$file"
 }
 
+# shader_layout.h's constants, as common/gl_util.c injects them after the #version line.
+layout=$(sed -n 's/^ *X(\([A-Z_]*\), *\([0-9-]*\)).*/#define SHADER_\1 \2/p' "$dir/../common/shader_layout.h")
+[ -n "$layout" ] || { echo "no constants found in common/shader_layout.h"; exit 1; }
+
 pass=0 fail=0
 for f in "$dir"/*.vert "$dir"/*.frag; do
   [ -f "$f" ] || continue
   name=$(basename "$f")
   stage=${name##*.}
-  if ! expand "$f" 0 > "$tmp/$name"; then
+  if ! expand "$f" 0 > "$tmp/$name.expanded"; then
     fail=$((fail + 1)); echo "FAIL $name"; continue
   fi
+  { head -n 1 "$tmp/$name.expanded"; printf '%s\n' "$layout"; tail -n +2 "$tmp/$name.expanded"; } > "$tmp/$name"
   if ! head -1 "$tmp/$name" | grep -q '^#version 330 core'; then
     fail=$((fail + 1)); echo "FAIL $name: first line must be '#version 330 core' (the course's minimum)"; continue
   fi

@@ -1,0 +1,43 @@
+/* shader_layout.h - every number the C code and the shaders must agree on, written once.
+ *
+ * Each X(NAME, VALUE) below is the C constant SHADER_NAME, and the program loader (gl_util.c)
+ * injects `#define SHADER_NAME VALUE` into every shader after its #version line, so a shader reads
+ * SHADER_LIGHT_TEXELS exactly as the C code that fills the texture does.
+ *
+ *   light texels (RGBA32F):  position.xyz + radius, radiance + 0, attenuation kc kl kq + 0
+ *   object texels (RGBA32F): world matrix columns 0-3, normal matrix columns 4-6,
+ *                            albedo + specular 7, shininess 8
+ *   views and tone maps:     the values of the u_view and u_tonemap uniforms
+ *   texture units:           where each pass binds its textures (GLSL 3.30 has no binding layout)
+ */
+#ifndef COMMON_SHADER_LAYOUT_H
+#define COMMON_SHADER_LAYOUT_H
+
+#define SHADER_LAYOUT(X)                                                                                   \
+    X(LIGHT_TEXELS, 3)                                                                                     \
+    X(OBJECT_TEXELS, 9)                                                                                    \
+    X(OBJECT_TEXEL_NORMAL, 4)                                                                              \
+    X(OBJECT_TEXEL_MATERIAL, 7)                                                                            \
+    X(OBJECT_TEXEL_SHININESS, 8)                                                                           \
+    X(VIEW_LIT, 0)                                                                                         \
+    X(VIEW_RING, 1)                                                                                        \
+    X(VIEW_OVERDRAW, 2)                                                                                    \
+    X(GBUFFER_VIEW_ALBEDO, 0)                                                                              \
+    X(GBUFFER_VIEW_NORMAL, 1)                                                                              \
+    X(GBUFFER_VIEW_DEPTH, 2)                                                                               \
+    X(GBUFFER_VIEW_SPECULAR, 3)                                                                            \
+    X(TONEMAP_NONE, 0)                                                                                     \
+    X(TONEMAP_EXPOSURE, 1)                                                                                 \
+    X(TONEMAP_REINHARD, 2)                                                                                 \
+    X(UNIT_LIGHTS, 0)                                                                                      \
+    X(UNIT_LIGHT_LIST, 1)                                                                                  \
+    X(UNIT_OBJECTS, 2)                                                                                     \
+    X(UNIT_GBUFFER, 3) /* three units: albedo, normal, depth */                                           \
+    X(UNIT_LIGHT_INDEX, 6)                                                                                 \
+    X(UNIT_IMAGE, 0)   /* a full-screen pass's one input texture */
+
+#define SHADER_LAYOUT_ENUM(name, value) SHADER_##name = (value),
+enum { SHADER_LAYOUT(SHADER_LAYOUT_ENUM) };
+#undef SHADER_LAYOUT_ENUM
+
+#endif
