@@ -3,6 +3,7 @@
 
 #include "app_internal.h"
 #include "gl_util.h"
+#include "image.h"
 #include "light.h"
 #include "log.h"
 #include "platform.h"
@@ -75,9 +76,11 @@ static bool check_size_limits(int width, int height)
 static bool save_screenshot(const app *a, const char *path)
 {
     image img;
-    if (!fbo_read_rgba8(&a->target, 0, &img))
+    if (!image_create(&img, a->width, a->height))
         return false;
-    bool ok = image_write_png(path, &img);
+    bool ok = fbo_read_rgba8(&a->target, 0, img.pixels);
+    image_flip_rows(&img); /* PNG rows go top first */
+    ok = ok && image_write_png(path, &img);
     image_destroy(&img);
     if (ok)
         log_info("wrote %s (%dx%d)", path, a->width, a->height);
@@ -166,7 +169,7 @@ static bool draw_frame(app *a, loop *l, int *rc)
     double t0 = platform_time();
     if (!gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) || !l->desc->frame(a) ||
         (!gl_check("frame") && l->opt->gl_debug)) {
-        *rc = CLI_EXIT_RUNTIME;
+        *rc = EXIT_CODE_RUNTIME;
         return false;
     }
     if (l->opt->bench)
@@ -187,7 +190,7 @@ static bool draw_frame(app *a, loop *l, int *rc)
 /* Frames until the count is reached or the window closes; returns the exit code. */
 static int run_loop(app *a, loop *l)
 {
-    int rc = CLI_EXIT_OK;
+    int rc = EXIT_CODE_OK;
     for (bool running = true; running;) {
         if (!app_hooks_minimise(&l->hooks, a, l->opt))
             return l->hooks.rc;
@@ -195,7 +198,7 @@ static int run_loop(app *a, loop *l)
         if (platform_should_close())
             break;
         if (!follow_size(a, l))
-            return CLI_EXIT_RUNTIME;
+            return EXIT_CODE_RUNTIME;
         for (int key; (key = platform_take_key()) != 0;)
             running = running && handle_key(a, l->desc, key, &l->paused);
         if (!running || !draw_frame(a, l, &rc))
@@ -203,7 +206,7 @@ static int run_loop(app *a, loop *l)
         a->frame_index++;
         bool last = l->total > 0 && a->frame_index >= l->total;
         if (last && l->opt->screenshot && !save_screenshot(a, l->opt->screenshot))
-            return CLI_EXIT_RUNTIME;
+            return EXIT_CODE_RUNTIME;
         platform_present(a->target.id, a->width, a->height);
         running = running && !last;
     }
@@ -215,16 +218,16 @@ static int app_open(app *a, const app_desc *desc, const cli_options *opt)
 {
     /* Input first: a bad scene is reported the same with or without a GL context. */
     if (!scene_load(opt->scene_path, &a->scene))
-        return CLI_EXIT_USAGE;
+        return EXIT_CODE_USAGE;
     if (opt->lights >= 0 && !light_generate(&a->scene, opt->lights, opt->seed)) {
         scene_destroy(&a->scene);
-        return CLI_EXIT_RUNTIME;
+        return EXIT_CODE_RUNTIME;
     }
     const platform_desc pd = {
         .backend = opt->backend, .width = opt->width, .height = opt->height, .title = desc->cli.program,
         .gl_debug = opt->gl_debug};
     int rc = platform_create(&pd);
-    if (rc != CLI_EXIT_OK)
+    if (rc != EXIT_CODE_OK)
         scene_destroy(&a->scene);
     else if (platform_is_windowed())
         platform_framebuffer_size(&a->width, &a->height);
@@ -235,12 +238,12 @@ static int app_open(app *a, const app_desc *desc, const cli_options *opt)
 static int app_setup(app *a, const app_desc *desc)
 {
     if (!check_size_limits(a->width, a->height))
-        return CLI_EXIT_USAGE;
+        return EXIT_CODE_USAGE;
     if (!gpu_scene_create(&a->scene, &a->gs))
-        return CLI_EXIT_USAGE; /* a model file that cannot be loaded is an input error */
+        return EXIT_CODE_USAGE; /* a model file that cannot be loaded is an input error */
     renderers_create(&a->renderers);
     a->query = gl_query_create();
-    return make_target(a) && (!desc->init || desc->init(a)) ? CLI_EXIT_OK : CLI_EXIT_RUNTIME;
+    return make_target(a) && (!desc->init || desc->init(a)) ? EXIT_CODE_OK : EXIT_CODE_RUNTIME;
 }
 
 static void app_close(app *a, const app_desc *desc)
@@ -262,16 +265,16 @@ static void app_close(app *a, const app_desc *desc)
 static int app_finish(app *a, loop *l, int rc)
 {
     const cli_options *opt = l->opt;
-    if (rc == CLI_EXIT_OK)
+    if (rc == EXIT_CODE_OK)
         rc = app_hooks_check(&l->hooks, a, opt);
-    if (rc == CLI_EXIT_OK && opt->bench && a->frame_index == l->total)
+    if (rc == EXIT_CODE_OK && opt->bench && a->frame_index == l->total)
         app_bench_print(a, l->times, opt->frames);
-    if (rc == CLI_EXIT_OK && opt->screenshot && l->total == 0 && !save_screenshot(a, opt->screenshot))
-        rc = CLI_EXIT_RUNTIME; /* window closed by the user: keep the last frame */
+    if (rc == EXIT_CODE_OK && opt->screenshot && l->total == 0 && !save_screenshot(a, opt->screenshot))
+        rc = EXIT_CODE_RUNTIME; /* window closed by the user: keep the last frame */
     if (opt->gl_debug && gl_debug_error_count() > 0) {
         log_error("%ld GL error(s) during the run", gl_debug_error_count());
-        if (rc == CLI_EXIT_OK)
-            rc = CLI_EXIT_RUNTIME;
+        if (rc == EXIT_CODE_OK)
+            rc = EXIT_CODE_RUNTIME;
     }
     return rc;
 }
@@ -292,28 +295,31 @@ static void app_init(app *a, const app_desc *desc, const cli_options *opt)
 
 int app_run(const app_desc *desc, int argc, char **argv)
 {
+    cli_desc cli = desc->cli;
+    cli.default_cutoff = LIGHT_DEFAULT_CUTOFF;
     cli_options opt;
-    int rc = cli_parse(argc, argv, &desc->cli, &opt);
-    if (rc != CLI_EXIT_OK)
-        return rc == CLI_EXIT_DONE ? 0 : rc;
+    int rc = cli_parse(argc, argv, &cli, &opt);
+    if (rc != EXIT_CODE_OK)
+        return rc == CLI_PARSE_DONE ? 0 : rc;
     log_set_verbose(opt.verbose);
     log_set_quiet(opt.bench);
     app a;
     app_init(&a, desc, &opt);
-    if ((rc = app_open(&a, desc, &opt)) != CLI_EXIT_OK)
+    a.cli = &cli;
+    if ((rc = app_open(&a, desc, &opt)) != EXIT_CODE_OK)
         return rc;
 
     loop l = {.desc = desc, .opt = &opt, .paused = opt.paused, .last_clock = platform_time()};
     app_hooks_init(&l.hooks, &opt);
     rc = app_setup(&a, desc);
-    if (rc == CLI_EXIT_OK && opt.bench && !(l.times = malloc((size_t)opt.frames * sizeof *l.times))) {
+    if (rc == EXIT_CODE_OK && opt.bench && !(l.times = malloc((size_t)opt.frames * sizeof *l.times))) {
         log_error("out of memory for %d frame times", opt.frames);
-        rc = CLI_EXIT_RUNTIME;
+        rc = EXIT_CODE_RUNTIME;
     }
     l.total = (long)opt.frames + (opt.bench ? opt.warmup : 0);
     if (l.total > 0)
         l.total += l.hooks.cycle_end + opt.minimise_cycle;
-    if (rc == CLI_EXIT_OK)
+    if (rc == EXIT_CODE_OK)
         rc = app_finish(&a, &l, run_loop(&a, &l));
     app_close(&a, desc);
     free(l.times);

@@ -40,7 +40,7 @@ static bool minimise_round(app_hooks *h, long frame, int rounds)
         h->live_before_minimise = gl_live_objects();
     if (!platform_minimise(MINIMISE_WAIT)) {
         log_error("no window manager: cannot minimise");
-        h->rc = CLI_EXIT_SKIP;
+        h->rc = EXIT_CODE_SKIP;
         return false;
     }
     log_debug("minimised (round %ld of %d)", frame, rounds);
@@ -76,19 +76,19 @@ int app_hooks_check(const app_hooks *h, const app *a, const cli_options *opt)
     if (h->cycle_end > 0 && a->frame_index > h->cycle_end && gl_live_objects() != h->live_before_resize) {
         log_error("--resize-cycle: %ld live GL objects before %d resizes, %ld after", h->live_before_resize,
                   opt->resize_cycle, gl_live_objects());
-        return CLI_EXIT_RUNTIME;
+        return EXIT_CODE_RUNTIME;
     }
     if (h->minimised_frames > 0) {
         log_error("--minimise-cycle: %ld frame(s) drawn while the window was minimised", h->minimised_frames);
-        return CLI_EXIT_RUNTIME;
+        return EXIT_CODE_RUNTIME;
     }
     if (opt->minimise_cycle > 0 && a->frame_index > opt->minimise_cycle &&
         gl_live_objects() != h->live_before_minimise) {
         log_error("--minimise-cycle: %ld live GL objects before %d minimise cycles, %ld after",
                   h->live_before_minimise, opt->minimise_cycle, gl_live_objects());
-        return CLI_EXIT_RUNTIME;
+        return EXIT_CODE_RUNTIME;
     }
-    return CLI_EXIT_OK;
+    return EXIT_CODE_OK;
 }
 
 static int compare_double(const void *x, const void *y)

@@ -1,7 +1,6 @@
 /* cli.c - see cli.h. */
 #include "cli.h"
 
-#include "light.h"
 #include "log.h"
 
 #include <errno.h>
@@ -82,7 +81,7 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "                           fail if a frame was drawn while minimised or GL objects leaked\n"
             "                           (exit 77 when nothing can minimise it: no window manager)\n"
             "  --verbose                more log lines\n",
-            LIGHT_DEFAULT_CUTOFF);
+            desc->default_cutoff);
     /* The chapter's own keys, then the ones app.c gives every chapter. */
     fprintf(stream, "\nwindow keys:\n%s", desc->keys ? desc->keys : "");
     if (desc->renderers && !(desc->keys && strstr(desc->keys, "  R ")))
@@ -134,7 +133,7 @@ static int usage_error(const cli_desc *desc, const char *fmt, const char *arg)
     char msg[512];
     snprintf(msg, sizeof msg, fmt, arg);
     log_error("%s: %s (see --help)", desc->program, msg);
-    return CLI_EXIT_USAGE;
+    return EXIT_CODE_USAGE;
 }
 
 /* "--name value" or "--name=value"; returns the value or NULL. */
@@ -177,7 +176,7 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
     out->view = desc->views ? desc->views[0] : NULL;
     out->lights = -1;
     out->seed = 1;
-    out->cutoff = LIGHT_DEFAULT_CUTOFF;
+    out->cutoff = desc->default_cutoff;
 #ifndef NDEBUG
     out->gl_debug = true;
 #endif
@@ -189,13 +188,13 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
         const char *v;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             cli_print_help(desc, stdout);
-            return CLI_EXIT_DONE;
+            return CLI_PARSE_DONE;
         } else if (strcmp(a, "--headless") == 0 || strcmp(a, "--headless=egl") == 0) {
             out->headless = true;
-            out->backend = CLI_BACKEND_EGL;
+            out->backend = BACKEND_EGL;
         } else if (strcmp(a, "--headless=osmesa") == 0) {
             out->headless = true;
-            out->backend = CLI_BACKEND_OSMESA;
+            out->backend = BACKEND_OSMESA;
         } else if (strncmp(a, "--headless=", 11) == 0) {
             return usage_error(desc, "unknown headless backend '%s' (egl or osmesa)", a + 11);
         } else if (strcmp(a, "--bench") == 0) {
@@ -293,5 +292,5 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
         return usage_error(desc, "%s minimises the window: not with --headless", "--minimise-cycle");
     if (out->minimise_cycle > 0 && out->bench)
         return usage_error(desc, "%s stops the frames it would time: not with --bench", "--minimise-cycle");
-    return CLI_EXIT_OK;
+    return EXIT_CODE_OK;
 }

@@ -1,6 +1,6 @@
 /* cli.h - the one command line every chapter binary shares.
  *
- *   cli_parse(argc, argv, desc, options)   fill options; CLI_EXIT_* tells the caller what to do
+ *   cli_parse(argc, argv, desc, options)   fill options; EXIT_CODE_* or CLI_PARSE_DONE (help printed)
  *   cli_print_help(desc, stream)           the --help text
  *   cli_parse_int(text, lo, hi, out)       the whole of `text` as an integer in [lo, hi]
  *   cli_parse_double(text, lo, hi, out)    the whole of `text` as a finite number in [lo, hi]
@@ -13,6 +13,8 @@
 #ifndef COMMON_CLI_H
 #define COMMON_CLI_H
 
+#include "exit_code.h"
+
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -20,20 +22,7 @@
 #define CLI_MAX_EXTRAS 8
 #define CLI_MAX_SIZE 65536 /* a sanity bound; the GL limit is checked once a context exists */
 
-enum {
-    CLI_EXIT_OK = 0,      /* run */
-    CLI_EXIT_RUNTIME = 1, /* a failure while running */
-    CLI_EXIT_USAGE = 2,   /* bad option or input */
-    CLI_EXIT_SKIP = 77,   /* no GL context (CTest's skip code) */
-    CLI_EXIT_DONE = -1,   /* --help printed: exit 0 */
-};
-
-typedef enum cli_backend {
-    CLI_BACKEND_AUTO,   /* window when a display exists, else EGL, else OSMesa */
-    CLI_BACKEND_WINDOW, /* GLFW */
-    CLI_BACKEND_EGL,    /* EGL surfaceless */
-    CLI_BACKEND_OSMESA, /* Mesa's off-screen library */
-} cli_backend;
+enum { CLI_PARSE_DONE = -1 }; /* cli_parse: --help was printed, exit 0 */
 
 /* An option a chapter adds: --NAME VALUE, VALUE one of choices (NULL-terminated) or free text. */
 typedef struct cli_extra {
@@ -51,10 +40,11 @@ typedef struct cli_desc {
     const char *const *views;        /* NULL-terminated or NULL; the first is the default */
     const char *keys;                /* window keys, one per line, for --help */
     cli_extra extras[CLI_MAX_EXTRAS];
+    double default_cutoff;           /* --cutoff's default (app_run sets the lighting model's) */
 } cli_desc;
 
 typedef struct cli_options {
-    cli_backend backend;
+    backend_kind backend;
     bool headless;
     int width, height;
     int frames;           /* 0: until the window closes (headless: 1) */

@@ -101,15 +101,12 @@ void fbo_destroy(fbo *f)
     memset(f, 0, sizeof *f);
 }
 
-bool fbo_read_rgba8(const fbo *f, int attachment, image *out)
+bool fbo_read_rgba8(const fbo *f, int attachment, unsigned char *rgba)
 {
-    if (!image_create(out, f->width, f->height))
-        return false;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, f->id);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)attachment);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, f->width, f->height, GL_RGBA, GL_UNSIGNED_BYTE, out->pixels);
+    glReadPixels(0, 0, f->width, f->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    image_flip_rows(out);
     return gl_check("fbo_read_rgba8");
 }

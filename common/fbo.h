@@ -3,7 +3,8 @@
  *   fbo_create(fbo, desc, width, height)  textures per desc, completeness checked (status logged by name)
  *   fbo_destroy(fbo)
  *   fbo_status_name(status)               "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT", ...
- *   fbo_read_rgba8(fbo, attachment, img)  read a colour attachment into an image (top row first)
+ *   fbo_read_rgba8(fbo, attachment, rgba) read a colour attachment as width x height RGBA bytes,
+ *                                         in GL's row order (bottom row first)
  *
  * desc.shared_depth attaches an existing depth texture instead of making one, so a lighting
  * pass can depth-test against the geometry pass's depth.
@@ -11,7 +12,6 @@
 #ifndef COMMON_FBO_H
 #define COMMON_FBO_H
 
-#include "image.h"
 
 #include <glad/gl.h>
 #include <stdbool.h>
@@ -38,6 +38,6 @@ typedef struct fbo {
 bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height);
 void fbo_destroy(fbo *f);
 const char *fbo_status_name(GLenum status);
-bool fbo_read_rgba8(const fbo *f, int attachment, image *out);
+bool fbo_read_rgba8(const fbo *f, int attachment, unsigned char *rgba);
 
 #endif

@@ -20,7 +20,7 @@
 #define RESTORE_WAIT 2.0 /* seconds platform_poll waits for a window it asked back (test hook) */
 
 static struct {
-    cli_backend backend;
+    backend_kind backend;
     GLFWwindow *window;
     EGLDisplay egl_display;
     EGLContext egl_context;
@@ -61,7 +61,7 @@ static int create_glfw(const platform_desc *desc)
     if (!glfwInit()) {
         log_error("cannot open a window: no display (DISPLAY is not set or the X server is unreachable); "
                   "run with --headless");
-        return CLI_EXIT_USAGE;
+        return EXIT_CODE_USAGE;
     }
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -76,16 +76,16 @@ static int create_glfw(const platform_desc *desc)
         glfwGetError(&why);
         log_error("cannot create a GL 3.3 core window: %s", why ? why : "unknown reason");
         glfwTerminate();
-        return CLI_EXIT_SKIP;
+        return EXIT_CODE_SKIP;
     }
     glfwMakeContextCurrent(state.window);
     glfwSwapInterval(0); /* measure the renderer, not the display's refresh */
     glfwSetKeyCallback(state.window, glfw_key);
     if (!gladLoadGL(glfwGetProcAddress)) {
         log_error("cannot load GL functions through GLFW");
-        return CLI_EXIT_SKIP;
+        return EXIT_CODE_SKIP;
     }
-    return CLI_EXIT_OK;
+    return EXIT_CODE_OK;
 }
 
 /* ---- EGL surfaceless ---------------------------------------------------------------------- */
@@ -168,34 +168,34 @@ int platform_create(const platform_desc *desc)
     memset(&state, 0, sizeof state);
     state.egl_display = EGL_NO_DISPLAY;
     state.egl_context = EGL_NO_CONTEXT;
-    cli_backend b = desc->backend;
-    if (b == CLI_BACKEND_AUTO || b == CLI_BACKEND_WINDOW) {
+    backend_kind b = desc->backend;
+    if (b == BACKEND_AUTO || b == BACKEND_WINDOW) {
         if (!display_available()) {
             log_error("no display to open a window on (DISPLAY is not set): run with --headless");
-            return CLI_EXIT_USAGE;
+            return EXIT_CODE_USAGE;
         }
         int rc = create_glfw(desc);
-        if (rc != CLI_EXIT_OK)
+        if (rc != EXIT_CODE_OK)
             return rc;
-        state.backend = CLI_BACKEND_WINDOW;
+        state.backend = BACKEND_WINDOW;
     } else {
         bool ok = false;
-        if (b == CLI_BACKEND_EGL) {
+        if (b == BACKEND_EGL) {
             ok = create_egl();
             if (!ok) {
                 destroy_egl();
                 log_info("EGL could not make a GL 3.3 core context; falling back to OSMesa");
-                b = CLI_BACKEND_OSMESA;
+                b = BACKEND_OSMESA;
             }
         }
-        if (b == CLI_BACKEND_OSMESA)
+        if (b == BACKEND_OSMESA)
             ok = create_osmesa();
         if (!ok) {
             log_error("no GL 3.3 core context could be created (tried %s); is Mesa (libgl1-mesa-dri, "
                       "libegl-mesa0, libosmesa6) installed?",
-                      desc->backend == CLI_BACKEND_EGL ? "EGL and OSMesa" : "OSMesa");
+                      desc->backend == BACKEND_EGL ? "EGL and OSMesa" : "OSMesa");
             platform_destroy();
-            return CLI_EXIT_SKIP;
+            return EXIT_CODE_SKIP;
         }
         state.backend = b;
     }
@@ -203,7 +203,7 @@ int platform_create(const platform_desc *desc)
         gl_debug_enable();
     log_debug("GL %s, %s, backend %s", (const char *)glGetString(GL_VERSION),
               (const char *)glGetString(GL_RENDERER), platform_backend_name());
-    return CLI_EXIT_OK;
+    return EXIT_CODE_OK;
 }
 
 void platform_destroy(void)
@@ -223,9 +223,9 @@ void platform_destroy(void)
 const char *platform_backend_name(void)
 {
     switch (state.backend) {
-    case CLI_BACKEND_WINDOW: return "glfw";
-    case CLI_BACKEND_EGL: return "egl";
-    case CLI_BACKEND_OSMESA: return "osmesa";
+    case BACKEND_WINDOW: return "glfw";
+    case BACKEND_EGL: return "egl";
+    case BACKEND_OSMESA: return "osmesa";
     default: return "none";
     }
 }

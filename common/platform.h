@@ -1,7 +1,7 @@
 /* platform.h - a GL 3.3+ core context on one of three backends, and the window around it.
  *
- *   platform_create(desc)          returns CLI_EXIT_OK, CLI_EXIT_USAGE (no display: use --headless)
- *                                  or CLI_EXIT_SKIP (no GL context could be made); logs why
+ *   platform_create(desc)          returns EXIT_CODE_OK, EXIT_CODE_USAGE (no display: use --headless)
+ *                                  or EXIT_CODE_SKIP (no GL context could be made); logs why
  *   platform_destroy()
  *   platform_backend_name()        "glfw", "egl" or "osmesa"
  *   platform_is_windowed()
@@ -26,7 +26,7 @@
 #ifndef COMMON_PLATFORM_H
 #define COMMON_PLATFORM_H
 
-#include "cli.h"
+#include "exit_code.h"
 
 #include <glad/gl.h>
 #include <stdbool.h>
@@ -42,7 +42,7 @@ enum {
 };
 
 typedef struct platform_desc {
-    cli_backend backend;
+    backend_kind backend;
     int width, height;
     const char *title;
     bool gl_debug;

@@ -43,19 +43,19 @@ int main(int argc, char **argv)
 {
     static bench_state st; /* large; zeroed */
     int rc = bench_options_parse(argc, argv, &st.opt);
-    if (rc == CLI_EXIT_DONE)
+    if (rc == CLI_PARSE_DONE)
         return 0;
-    if (rc != CLI_EXIT_OK)
+    if (rc != EXIT_CODE_OK)
         return rc;
     const bench_options *o = &st.opt;
     if (mkdir(o->out_dir, 0755) != 0 && errno != EEXIST) {
         log_error("cannot create %s: %s", o->out_dir, strerror(errno));
-        return CLI_EXIT_RUNTIME;
+        return EXIT_CODE_RUNTIME;
     }
     const platform_desc pd = {
         .backend = o->backend, .width = o->width, .height = o->height, .title = "bench"};
     rc = platform_create(&pd);
-    if (rc != CLI_EXIT_OK)
+    if (rc != EXIT_CODE_OK)
         return rc;
     bench_state_read_machine(&st);
     printf("bench: cpu=\"%s\" cores=%d gl_renderer=\"%s\" gl_version=\"%s\" size=%dx%d frames=%d warmup=%d\n",
@@ -68,12 +68,12 @@ int main(int argc, char **argv)
     bench_renderers *br = NULL;
     bool ok = bench_measure_create(o->width, o->height, &m) &&
               bench_renderers_create(o->width, o->height, &br) && bench_run_all(&st, br, &m);
-    rc = ok ? CLI_EXIT_OK : CLI_EXIT_RUNTIME;
+    rc = ok ? EXIT_CODE_OK : EXIT_CODE_RUNTIME;
     if (ok)
         fprintf(stderr, "bench: %d cases in %.1f s\n", st.case_index, (bench_measure_now_ms() - t0) / 1000.0);
     if (ok && !write_outputs(&st))
-        rc = CLI_EXIT_RUNTIME;
-    if (rc == CLI_EXIT_OK)
+        rc = EXIT_CODE_RUNTIME;
+    if (rc == EXIT_CODE_OK)
         printf("bench: wrote %s/bench.csv %s/bench.md%s\n", o->out_dir, o->out_dir,
                o->plots ? " and the plots" : "");
     bench_renderers_destroy(br);

@@ -53,9 +53,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     cli_options o;
     int rc = cli_parse(argc, argv, &DESC, &o);
-    if (rc != CLI_EXIT_OK && rc != CLI_EXIT_USAGE && rc != CLI_EXIT_DONE)
+    if (rc != EXIT_CODE_OK && rc != EXIT_CODE_USAGE && rc != CLI_PARSE_DONE)
         abort();
-    if (rc == CLI_EXIT_OK) {
+    if (rc == EXIT_CODE_OK) {
         /* What the rest of the course trusts once the parser said yes. */
         if (o.width < 1 || o.width > CLI_MAX_SIZE || o.height < 1 || o.height > CLI_MAX_SIZE)
             abort();

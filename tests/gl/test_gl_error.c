@@ -20,10 +20,10 @@ static void expect(bool ok, const char *what)
 int main(void)
 {
     const platform_desc pd = {
-        .backend = CLI_BACKEND_EGL, .width = 64, .height = 64, .title = "test_gl_error"};
+        .backend = BACKEND_EGL, .width = 64, .height = 64, .title = "test_gl_error"};
     int rc = platform_create(&pd);
-    if (rc != CLI_EXIT_OK)
-        return rc == CLI_EXIT_SKIP ? 77 : 1;
+    if (rc != EXIT_CODE_OK)
+        return rc == EXIT_CODE_SKIP ? 77 : 1;
 
     /* 1. Without KHR_debug only gl_check notices. GL_INVALID_ENUM: 0x1234 is no capability. */
     expect(gl_check("a clean start"), "a fresh context has no pending error");

@@ -59,11 +59,11 @@ static bool fbo_replaced(const fbo *before, const fbo *now)
 int main(void)
 {
     const platform_desc pd = {
-        .backend = CLI_BACKEND_EGL, .width = 64, .height = 64, .title = "test_resize_leaks",
+        .backend = BACKEND_EGL, .width = 64, .height = 64, .title = "test_resize_leaks",
         .gl_debug = true};
     int rc = platform_create(&pd);
-    if (rc != CLI_EXIT_OK)
-        return rc == CLI_EXIT_SKIP ? 77 : 1;
+    if (rc != EXIT_CODE_OK)
+        return rc == EXIT_CODE_SKIP ? 77 : 1;
 
     long empty = gl_live_objects();
     fbo target = {0};

@@ -21,6 +21,7 @@
 
 #include "app.h"
 #include "gl_util.h"
+#include "image.h"
 #include "light.h"
 #include "renderers.h"
 
@@ -125,7 +126,9 @@ static bool render(renderer r, loaded *l, double cutoff, image *out)
     if (!gpu_scene_update(&l->gs, 0.0f, cutoff, state.width, state.height))
         return false;
     bool ok = renderers_draw(&state.rs, RENDERER_IDS[r], &l->gs, state.target.id, (renderer_draw_options){0}, NULL);
-    ok = ok && fbo_read_rgba8(&state.target, 0, out);
+    ok = ok && image_create(out, state.width, state.height) && fbo_read_rgba8(&state.target, 0, out->pixels);
+    if (ok)
+        image_flip_rows(out);
     return hard_expect(ok && gl_check(RENDERER_NAMES[r]), "render %s at cut-off %g", RENDERER_NAMES[r],
                        cutoff);
 }

@@ -15,11 +15,11 @@ static int failures;
 void hard_context_create(int width, int height)
 {
     const platform_desc desc = {
-        .backend = CLI_BACKEND_EGL, .width = width, .height = height, .title = "hard", .gl_debug = true};
+        .backend = BACKEND_EGL, .width = width, .height = height, .title = "hard", .gl_debug = true};
     int rc = platform_create(&desc);
-    if (rc != CLI_EXIT_OK) {
+    if (rc != EXIT_CODE_OK) {
         printf("skip: no GL context\n");
-        exit(CLI_EXIT_SKIP); /* never pass without a context */
+        exit(EXIT_CODE_SKIP); /* never pass without a context */
     }
 }
 

@@ -23,6 +23,7 @@ static const cli_desc desc = {
     .extras = {{.name = "tonemap", .metavar = "NAME", .help = "tone map", .choices = tonemaps,
                 .default_value = "none"},
                {.name = "exposure", .metavar = "E", .help = "exposure", .default_value = "1"}},
+    .default_cutoff = LIGHT_DEFAULT_CUTOFF,
 };
 
 static int parse(cli_options *o, const char *line)
@@ -42,7 +43,7 @@ static void test_defaults(void **state)
 {
     (void)state;
     cli_options o;
-    assert_int_equal(parse(&o, ""), CLI_EXIT_OK);
+    assert_int_equal(parse(&o, ""), EXIT_CODE_OK);
     assert_int_equal(o.width, 800);
     assert_int_equal(o.height, 600);
     assert_int_equal(o.frames, 0); /* window: until closed */
@@ -53,10 +54,10 @@ static void test_defaults(void **state)
     assert_false(o.headless);
     assert_string_equal(cli_extra_value(&desc, &o, "tonemap"), "none");
     assert_string_equal(cli_extra_value(&desc, &o, "exposure"), "1");
-    assert_int_equal(parse(&o, "--headless"), CLI_EXIT_OK);
+    assert_int_equal(parse(&o, "--headless"), EXIT_CODE_OK);
     assert_int_equal(o.frames, 1); /* headless: one frame */
-    assert_int_equal(o.backend, CLI_BACKEND_EGL);
-    assert_int_equal(parse(&o, "--headless --bench"), CLI_EXIT_OK);
+    assert_int_equal(o.backend, BACKEND_EGL);
+    assert_int_equal(parse(&o, "--headless --bench"), EXIT_CODE_OK);
     assert_int_equal(o.frames, 10);
 }
 
@@ -67,8 +68,8 @@ static void test_every_option(void **state)
     assert_int_equal(parse(&o, "--headless=osmesa --size 320x240 --frames 5 --screenshot a.png --scene s.scene "
                                "--renderer forward --view normal --lights 64 --seed 9 --time 2.5 --cutoff 0 "
                                "--bench --warmup 2 --gl-debug --paused --tonemap reinhard --exposure=0.5"),
-                     CLI_EXIT_OK);
-    assert_int_equal(o.backend, CLI_BACKEND_OSMESA);
+                     EXIT_CODE_OK);
+    assert_int_equal(o.backend, BACKEND_OSMESA);
     assert_int_equal(o.width, 320);
     assert_int_equal(o.height, 240);
     assert_int_equal(o.frames, 5);
@@ -84,7 +85,7 @@ static void test_every_option(void **state)
     assert_int_equal(o.warmup, 2);
     assert_string_equal(cli_extra_value(&desc, &o, "tonemap"), "reinhard");
     assert_string_equal(cli_extra_value(&desc, &o, "exposure"), "0.5");
-    assert_int_equal(parse(&o, "--size=1x1"), CLI_EXIT_OK);
+    assert_int_equal(parse(&o, "--size=1x1"), EXIT_CODE_OK);
     assert_int_equal(o.width, 1);
 }
 
@@ -100,7 +101,7 @@ static void test_refused(void **state)
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         cli_options o;
         int rc = parse(&o, bad[i]);
-        if (rc != CLI_EXIT_USAGE)
+        if (rc != EXIT_CODE_USAGE)
             fail_msg("'%s' was accepted (rc %d)", bad[i], rc);
     }
 }
@@ -114,7 +115,7 @@ static void test_help(void **state)
     int rc = parse(&o, "--help");
     fclose(stdout);
     stdout = saved;
-    assert_int_equal(rc, CLI_EXIT_DONE);
+    assert_int_equal(rc, CLI_PARSE_DONE);
 }
 
 int main(void)

@@ -67,7 +67,7 @@ bool bench_measure_make_reference(bench_measure *m, bench_renderers *br, gpu_sce
     bool ok =
         gpu_scene_update(gs, 0.0f, 0.0, m->width, m->height) && bench_render_frame(br, r, gs, false, NULL);
     image_destroy(&m->ref8);
-    ok = ok && fbo_read_rgba8(bench_renderers_target(br), 0, &m->ref8) &&
+    ok = ok && bench_renderers_read_target(br, &m->ref8) &&
          bench_read_linear(br, r, gs, m->ref_hdr);
     ok = gpu_scene_update(gs, 0.0f, cutoff, m->width, m->height) && ok;
     if (!ok)
@@ -103,7 +103,7 @@ bool bench_measure_count_ideal(bench_measure *m, bench_renderers *br, const gpu_
 static bool measure_error(bench_measure *m, bench_renderers *br, const gpu_scene *gs, bench_row *row)
 {
     image img;
-    if (!fbo_read_rgba8(bench_renderers_target(br), 0, &img))
+    if (!bench_renderers_read_target(br, &img))
         return false;
     row->have_error8 = image_compare(&img, &m->ref8, NULL, 1, &row->error8, NULL);
     image_destroy(&img);

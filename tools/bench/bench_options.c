@@ -165,7 +165,7 @@ static void set_defaults(bench_options *o)
     o->scene_dir = "assets/scenes";
     o->out_dir = "out";
     o->plots = true;
-    o->backend = CLI_BACKEND_EGL;
+    o->backend = BACKEND_EGL;
 }
 
 static void set_quick(bench_options *o)
@@ -256,9 +256,9 @@ static option_result parse_io_option(bench_options *o, const char *a, const char
         o->out_dir = v;
     } else if (strcmp(a, "--backend") == 0) {
         if (v && strcmp(v, "egl") == 0)
-            o->backend = CLI_BACKEND_EGL;
+            o->backend = BACKEND_EGL;
         else if (v && strcmp(v, "osmesa") == 0)
-            o->backend = CLI_BACKEND_OSMESA;
+            o->backend = BACKEND_OSMESA;
         else
             good = usage_error("bad --backend (egl or osmesa)", v);
     } else {
@@ -281,7 +281,7 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             bench_options_print_help(stdout);
-            return CLI_EXIT_DONE;
+            return CLI_PARSE_DONE;
         }
         if (strcmp(a, "--quick") == 0)
             continue;
@@ -297,14 +297,14 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
         if (res == OPTION_UNKNOWN)
             usage_error("unknown option", a);
         if (res != OPTION_GOOD)
-            return CLI_EXIT_USAGE;
+            return EXIT_CODE_USAGE;
         i++; /* the value */
     }
     if (o->min_frames > o->frames)
         o->min_frames = o->frames;
     if (!have_cutoff_scene)
         snprintf(o->cutoff_scene, NAME_MAX_LEN, "%s", o->scenes[0]);
-    return CLI_EXIT_OK;
+    return EXIT_CODE_OK;
 }
 
 void bench_options_find_scene(const bench_options *options, const char *name, char *out, size_t size)

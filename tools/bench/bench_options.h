@@ -1,8 +1,8 @@
 /* bench_options.h - the benchmark's command line: what it sweeps, how long it times, where it writes.
  *
  *   bench_options_parse(argc, argv, out)   defaults, then --quick, then every option in order;
- *                                          returns CLI_EXIT_OK, CLI_EXIT_USAGE (one line on stderr)
- *                                          or CLI_EXIT_DONE (after --help)
+ *                                          returns EXIT_CODE_OK, EXIT_CODE_USAGE (one line on stderr)
+ *                                          or CLI_PARSE_DONE (after --help)
  *   bench_options_print_help(stream)       the --help text
  *   bench_options_find_scene(options, name, out, size)
  *                                          the file of a --scenes item: a path as given, else
@@ -43,7 +43,7 @@ typedef struct bench_options {
     const char *scene_dir;
     const char *out_dir;
     bool quick, plots;
-    cli_backend backend;
+    backend_kind backend;
 } bench_options;
 
 int bench_options_parse(int argc, char **argv, bench_options *out);

@@ -88,6 +88,15 @@ void bench_renderers_destroy(bench_renderers *br)
 
 const fbo *bench_renderers_target(const bench_renderers *br) { return &br->target; }
 
+bool bench_renderers_read_target(const bench_renderers *br, image *out)
+{
+    if (!image_create(out, br->target.width, br->target.height))
+        return false;
+    bool ok = fbo_read_rgba8(&br->target, 0, out->pixels);
+    image_flip_rows(out); /* images are top row first */
+    return ok;
+}
+
 bool bench_render_frame(bench_renderers *br, int r, const gpu_scene *gs, bool count, bench_frame_work *work)
 {
     renderer_result res;

@@ -18,6 +18,7 @@
  *                                          and false on failure (logged)
  *   bench_renderers_destroy(br)            NULL is fine
  *   bench_renderers_target(br)             the framebuffer every frame ends in (for read-backs)
+ *   bench_renderers_read_target(br, img)   that framebuffer's picture, top row first (made here)
  *   bench_render_frame(br, r, gs, count, work)
  *                                          one frame of renderer r into the target; with count, the
  *                                          lighting work into *work (work may be NULL)
@@ -29,6 +30,7 @@
 
 #include "fbo.h"
 #include "gpu_scene.h"
+#include "image.h"
 
 #include <stdbool.h>
 
@@ -55,6 +57,7 @@ int bench_renderer_gbuffer_naive_bytes(void);
 bool bench_renderers_create(int width, int height, bench_renderers **out);
 void bench_renderers_destroy(bench_renderers *br);
 const fbo *bench_renderers_target(const bench_renderers *br);
+bool bench_renderers_read_target(const bench_renderers *br, image *out);
 bool bench_render_frame(bench_renderers *br, int r, const gpu_scene *gs, bool count, bench_frame_work *work);
 bool bench_read_linear(bench_renderers *br, int r, const gpu_scene *gs, float *rgba);
 
