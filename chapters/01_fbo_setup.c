@@ -5,7 +5,8 @@
  * texture) and a depth renderbuffer (only the depth test reads it, so no texture needed). The
  * scene is chapter 00's forward renderer drawn into it; a full-screen triangle then copies the
  * colour texture into the window. The picture must be chapter 00's, pixel for pixel (key R
- * switches to drawing it directly). common/fbo.c is the same code, promoted for later chapters.
+ * switches to drawing it directly). common/fbo.c generalises this for later chapters: several
+ * colour textures and a depth TEXTURE, because from chapter 02 on a later pass reads the depth.
  * Read docs/01_fbo_setup.md alongside.
  */
 #include "app.h"
@@ -24,9 +25,7 @@ static void offscreen_destroy(void)
 {
     gl_framebuffer_destroy(&state.fbo);
     gl_texture_destroy(&state.color);
-    if (state.depth)
-        glDeleteRenderbuffers(1, &state.depth);
-    state.depth = 0;
+    gl_renderbuffer_destroy(&state.depth);
 }
 
 static bool offscreen_create(int width, int height)
@@ -44,7 +43,7 @@ static bool offscreen_create(int width, int height)
     glBindTexture(GL_TEXTURE_2D, 0);
 
     /* 2. the depth buffer: a renderbuffer, because nothing samples it afterwards */
-    glGenRenderbuffers(1, &state.depth);
+    state.depth = gl_renderbuffer_create();
     glBindRenderbuffer(GL_RENDERBUFFER, state.depth);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);

@@ -53,16 +53,12 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
     glViewport(0, 0, g->fbo.width, g->fbo.height);
     /* Zero normal/material and depth 1 mark the background; the lighting pass tests depth. */
     glClearColor(0, 0, 0, 0);
-    glDepthMask(GL_TRUE);
+    gl_pass_state_reset();
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     /* Same state as forward_render (GL_LEQUAL: on an exact depth tie the object drawn last wins):
      * an object hides another exactly where it does there. */
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glDisable(GL_BLEND);
+    gl_pass_state_apply(&(gl_pass_state){.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true});
     /* Without this an SRGB8 attachment stores the linear value unconverted (and reads decode it). */
     glEnable(GL_FRAMEBUFFER_SRGB);
 
@@ -71,9 +67,7 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
     gpu_scene_draw(gs, g->program);
 
     glDisable(GL_FRAMEBUFFER_SRGB);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    gl_pass_state_reset();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return true;
 }

@@ -3,8 +3,10 @@
  *   gbuffer_create(g, width, height)     textures + framebuffer + the geometry-pass program
  *   gbuffer_resize(g, width, height)     recreate the textures (window resize)
  *   gbuffer_destroy(g)
- *   gbuffer_render(g, gs)                geometry pass: every object once, depth test on
- *   gbuffer_bind_textures(g, program, first_unit)
+ *   gbuffer_render(g, gs)                geometry pass into g's own framebuffer: every object once,
+ *                                        depth test on; leaves framebuffer 0 bound and
+ *                                        gl_pass_state_reset()'s state
+ *   gbuffer_bind_textures(g, gs, program, first_unit)
  *                                        u_gbuffer_albedo, u_gbuffer_normal, u_gbuffer_depth on units
  *                                        first_unit..first_unit+2, plus u_inv_view_proj and u_eye
  *   gbuffer_bytes_per_pixel()            this layout's size (a naive layout is GBUFFER_NAIVE_BYTES)

@@ -280,6 +280,7 @@ COUNTED_PAIR(buffer, glGenBuffers, glDeleteBuffers)
 COUNTED_PAIR(framebuffer, glGenFramebuffers, glDeleteFramebuffers)
 COUNTED_PAIR(vertex_array, glGenVertexArrays, glDeleteVertexArrays)
 COUNTED_PAIR(query, glGenQueries, glDeleteQueries)
+COUNTED_PAIR(renderbuffer, glGenRenderbuffers, glDeleteRenderbuffers)
 
 long gl_live_objects(void) { return state.live_objects; }
 

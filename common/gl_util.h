@@ -8,6 +8,7 @@
  *                                         its messages, and #include still reads from shaders/
  *   gl_program_destroy(&program)
  *   gl_texture_create / gl_buffer_create / gl_framebuffer_create / gl_vertex_array_create / gl_query_create
+ *   / gl_renderbuffer_create
  *   gl_texture_destroy / gl_buffer_destroy / gl_framebuffer_destroy / gl_vertex_array_destroy / ..._destroy
  *                                         create/delete pairs that count live objects
  *   gl_live_objects()                     objects created and not yet destroyed (leak checks)
@@ -43,11 +44,13 @@ GLuint gl_buffer_create(void);
 GLuint gl_framebuffer_create(void);
 GLuint gl_vertex_array_create(void);
 GLuint gl_query_create(void);
+GLuint gl_renderbuffer_create(void);
 void gl_texture_destroy(GLuint *id);
 void gl_buffer_destroy(GLuint *id);
 void gl_framebuffer_destroy(GLuint *id);
 void gl_vertex_array_destroy(GLuint *id);
 void gl_query_destroy(GLuint *id);
+void gl_renderbuffer_destroy(GLuint *id);
 long gl_live_objects(void);
 
 bool gl_check(const char *where);
