@@ -25,6 +25,14 @@
 
 static const char *const renderers[] = {"forward", "forward-naive", "forward-prepass", "forward-lists", NULL};
 
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "00_forward",
+    .summary = "Chapter 00: forward rendering, the baseline every deferred chapter is compared with.",
+    .renderers = renderers,
+    .keys = "  R        next renderer (forward, naive, pre-pass only, light lists only)\n",
+};
+
 /* Every pass draws the scene with GL_LEQUAL, so on an exact depth tie the object drawn last wins,
  * with or without a pre-pass (and in the G-buffer of the deferred chapters alike). */
 static const gl_pass_state scene_pass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
@@ -93,17 +101,6 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {
-        .cli =
-            {
-                .program = "00_forward",
-                .summary = "Chapter 00: forward rendering, the baseline every deferred chapter is compared with.",
-                .renderers = renderers,
-                .keys = "  R        next renderer (forward, naive, pre-pass only, light lists only)\n",
-            },
-        .init = init,
-        .frame = frame,
-        .cleanup = cleanup,
-    };
+    const app_desc desc = {.cli = cli, .init = init, .frame = frame, .cleanup = cleanup};
     return app_run(&desc, argc, argv);
 }

@@ -15,6 +15,14 @@
 
 static const char *const renderers[] = {"offscreen", "forward", NULL};
 
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "01_fbo_setup",
+    .summary = "Chapter 01: render into an offscreen framebuffer, then present it.",
+    .renderers = renderers,
+    .keys = "  R        switch offscreen / forward (straight into the target)\n",
+};
+
 static struct {
     GLuint fbo, color, depth; /* framebuffer, its colour texture, its depth renderbuffer */
     int width, height;
@@ -107,18 +115,6 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {
-        .cli =
-            {
-                .program = "01_fbo_setup",
-                .summary = "Chapter 01: render into an offscreen framebuffer, then present it.",
-                .renderers = renderers,
-                .keys = "  R        switch offscreen / forward (straight into the target)\n",
-            },
-        .init = init,
-        .resize = resize,
-        .frame = frame,
-        .cleanup = cleanup,
-    };
+    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
     return app_run(&desc, argc, argv);
 }

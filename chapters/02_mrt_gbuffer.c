@@ -18,6 +18,16 @@ static const char *const renderers[] = {"deferred", "forward", NULL};
 /* Order matches VIEW_* in shaders/gbuffer_view.frag; `final` is last. */
 static const char *const views[] = {"albedo", "normal", "depth", "specular", "final", NULL};
 
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "02_mrt_gbuffer",
+    .summary = "Chapter 02: a geometry pass writes the G-buffer through multiple render targets.",
+    .renderers = renderers,
+    .views = views,
+    .keys = "  V        next view: albedo, normal, depth, specular, final\n"
+            "  R        switch deferred / forward\n",
+};
+
 static struct {
     gbuffer gbuf;
     GLuint view_program;
@@ -96,20 +106,6 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {
-        .cli =
-            {
-                .program = "02_mrt_gbuffer",
-                .summary = "Chapter 02: a geometry pass writes the G-buffer through multiple render targets.",
-                .renderers = renderers,
-                .views = views,
-                .keys = "  V        next view: albedo, normal, depth, specular, final\n"
-                        "  R        switch deferred / forward\n",
-            },
-        .init = init,
-        .resize = resize,
-        .frame = frame,
-        .cleanup = cleanup,
-    };
+    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
     return app_run(&desc, argc, argv);
 }

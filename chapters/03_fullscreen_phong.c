@@ -26,6 +26,16 @@
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const views[] = {"lit", "reach", NULL};
 
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "03_fullscreen_phong",
+    .summary = "Chapter 03: deferred shading with a full-screen lighting pass over all lights.",
+    .renderers = renderers,
+    .views = views,
+    .keys = "  R        switch deferred / forward (the pictures must agree)\n"
+            "  V        view: lit, or reach (the fraction of the light loop that does work)\n",
+};
+
 static struct {
     gbuffer gbuf;
     deferred_fullscreen lighting; /* the lighting pass */
@@ -82,20 +92,6 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {
-        .cli =
-            {
-                .program = "03_fullscreen_phong",
-                .summary = "Chapter 03: deferred shading with a full-screen lighting pass over all lights.",
-                .renderers = renderers,
-                .views = views,
-                .keys = "  R        switch deferred / forward (the pictures must agree)\n"
-                        "  V        view: lit, or reach (the fraction of the light loop that does work)\n",
-            },
-        .init = init,
-        .resize = resize,
-        .frame = frame,
-        .cleanup = cleanup,
-    };
+    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
     return app_run(&desc, argc, argv);
 }

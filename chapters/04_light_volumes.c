@@ -33,6 +33,23 @@
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const scales[] = {"inradius", "none", NULL};
 
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "04_light_volumes",
+    .summary =
+        "Chapter 04: one instanced sphere per light; only the pixels it covers are shaded.",
+    .renderers = renderers,
+    .keys = "  R        switch renderer (deferred light volumes, forward)\n"
+            "  S        scale the volume mesh by 1 / inradius, or not\n",
+    .extras =
+        {
+            {"radius", "R", "radius of every light volume (chapter 05 solves one per light)",
+             NULL, "3"},
+            {"scale", "MODE", "volume mesh scale: inradius (contains the sphere) or none", scales,
+             "inradius"},
+        },
+};
+
 /* The volumes' fixed-function state: back faces only, no blending, no depth test. */
 static const gl_pass_state volume_pass = {.cull = GL_FRONT};
 
@@ -112,28 +129,7 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {
-        .cli =
-            {
-                .program = "04_light_volumes",
-                .summary =
-                    "Chapter 04: one instanced sphere per light; only the pixels it covers are shaded.",
-                .renderers = renderers,
-                .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-                        "  S        scale the volume mesh by 1 / inradius, or not\n",
-                .extras =
-                    {
-                        {"radius", "R", "radius of every light volume (chapter 05 solves one per light)",
-                         NULL, "3"},
-                        {"scale", "MODE", "volume mesh scale: inradius (contains the sphere) or none", scales,
-                         "inradius"},
-                    },
-            },
-        .init = init,
-        .resize = resize,
-        .frame = frame,
-        .cleanup = cleanup,
-        .key = key,
-    };
+    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
+                           .key = key};
     return app_run(&desc, argc, argv);
 }

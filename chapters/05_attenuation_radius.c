@@ -31,6 +31,17 @@
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const views[] = {"lit", "ring", NULL};
 
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "05_attenuation_radius",
+    .summary =
+        "Chapter 05: each light volume's radius solved from its attenuation and the cut-off.",
+    .renderers = renderers,
+    .views = views,
+    .keys = "  R        switch renderer (deferred light volumes, forward)\n"
+            "  V        view: lit, or lit + the cut-off ring of every light\n",
+};
+
 /* The volumes' fixed-function state, as in chapter 04: back faces only, no blending, no depth test. */
 static const gl_pass_state volume_pass = {.cull = GL_FRONT};
 
@@ -99,21 +110,6 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {
-        .cli =
-            {
-                .program = "05_attenuation_radius",
-                .summary =
-                    "Chapter 05: each light volume's radius solved from its attenuation and the cut-off.",
-                .renderers = renderers,
-                .views = views,
-                .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-                        "  V        view: lit, or lit + the cut-off ring of every light\n",
-            },
-        .init = init,
-        .resize = resize,
-        .frame = frame,
-        .cleanup = cleanup,
-    };
+    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
     return app_run(&desc, argc, argv);
 }

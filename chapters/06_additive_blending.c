@@ -35,6 +35,24 @@ static const char *const accum_names[] = {"rgba16f", "rgba8", "rgba32f", NULL};
 static const GLenum accum_formats[] = {GL_RGBA16F, GL_RGBA8, GL_RGBA32F};
 static const char *const tonemaps[] = {"none", "exposure", "reinhard", NULL};
 
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "06_additive_blending",
+    .summary = "Chapter 06: lights summed with additive blending in a float buffer, then "
+               "tone mapped once.",
+    .renderers = renderers,
+    .keys = "  R        switch renderer (deferred light volumes, forward)\n"
+            "  A        accumulation buffer: rgba16f, rgba8 (saturates), rgba32f\n"
+            "  T        tone map: none, exposure, reinhard\n"
+            "  - =      halve / double the exposure\n",
+    .extras =
+        {
+            {"accum", "FORMAT", "accumulation buffer format", accum_names, "rgba16f"},
+            {"tonemap", "OP", "display transform of the sum", tonemaps, "none"},
+            {"exposure", "E", "scale before the exposure / reinhard tone maps", NULL, "1"},
+        },
+};
+
 /* The volumes' fixed-function state: back faces only as before, and now every fragment is ADDED
  * to what the buffer holds (source * 1 + destination * 1). */
 static const gl_pass_state volume_pass = {.blend = {GL_ONE, GL_ONE}, .cull = GL_FRONT};
@@ -113,29 +131,7 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {
-        .cli =
-            {
-                .program = "06_additive_blending",
-                .summary = "Chapter 06: lights summed with additive blending in a float buffer, then "
-                           "tone mapped once.",
-                .renderers = renderers,
-                .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-                        "  A        accumulation buffer: rgba16f, rgba8 (saturates), rgba32f\n"
-                        "  T        tone map: none, exposure, reinhard\n"
-                        "  - =      halve / double the exposure\n",
-                .extras =
-                    {
-                        {"accum", "FORMAT", "accumulation buffer format", accum_names, "rgba16f"},
-                        {"tonemap", "OP", "display transform of the sum", tonemaps, "none"},
-                        {"exposure", "E", "scale before the exposure / reinhard tone maps", NULL, "1"},
-                    },
-            },
-        .init = init,
-        .resize = resize,
-        .frame = frame,
-        .cleanup = cleanup,
-        .key = key,
-    };
+    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
+                           .key = key};
     return app_run(&desc, argc, argv);
 }

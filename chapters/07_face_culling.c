@@ -34,6 +34,24 @@ static const char *const views[] = {"lit", "overdraw", NULL};
 static const char *const culls[] = {"front", "back", "none", NULL};
 static const char *const on_off[] = {"on", "off", NULL};
 
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "07_face_culling",
+    .summary = "Chapter 07: back faces of the light volumes, depth-tested against the scene.",
+    .renderers = renderers,
+    .views = views,
+    .keys = "  R        switch renderer (deferred light volumes, forward)\n"
+            "  V        view: lit, or overdraw (lighting fragments per pixel)\n"
+            "  C        cull front faces (right), back faces, or none (both wrong)\n"
+            "  D        depth clamp on / off\n",
+    .extras =
+        {
+            {"cull", "FACES", "faces culled: front is right; back and none show bugs", culls,
+             "front"},
+            {"depth-clamp", "ON", "keep volumes that cross the far plane", on_off, "on"},
+        },
+};
+
 /* The volumes' fixed-function state: added up as in chapter 06; back faces, kept only where they
  * lie behind the scene's surface; the scene's depth is read, never written; no far-plane clipping. */
 static const gl_pass_state volume_pass = {
@@ -120,29 +138,7 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {
-        .cli =
-            {
-                .program = "07_face_culling",
-                .summary = "Chapter 07: back faces of the light volumes, depth-tested against the scene.",
-                .renderers = renderers,
-                .views = views,
-                .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-                        "  V        view: lit, or overdraw (lighting fragments per pixel)\n"
-                        "  C        cull front faces (right), back faces, or none (both wrong)\n"
-                        "  D        depth clamp on / off\n",
-                .extras =
-                    {
-                        {"cull", "FACES", "faces culled: front is right; back and none show bugs", culls,
-                         "front"},
-                        {"depth-clamp", "ON", "keep volumes that cross the far plane", on_off, "on"},
-                    },
-            },
-        .init = init,
-        .resize = resize,
-        .frame = frame,
-        .cleanup = cleanup,
-        .key = key,
-    };
+    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
+                           .key = key};
     return app_run(&desc, argc, argv);
 }

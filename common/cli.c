@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -164,7 +165,39 @@ const char *cli_extra_value(const cli_desc *desc, const cli_options *options, co
     return NULL;
 }
 
-int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
+/* Options that take a number: where it goes, its range, and what the message says it must be. */
+typedef enum number_kind { NUMBER_INT, NUMBER_SEED, NUMBER_FLOAT, NUMBER_DOUBLE } number_kind;
+static const struct number_option {
+    const char *name;
+    number_kind kind;
+    size_t offset;
+    double lo, hi;
+    const char *expected;
+} number_options[] = {
+    {"--frames", NUMBER_INT, offsetof(cli_options, frames), 1, INT_MAX, "a whole number >= 1"},
+    {"--warmup", NUMBER_INT, offsetof(cli_options, warmup), 0, 100000, "a whole number >= 0"},
+    {"--lights", NUMBER_INT, offsetof(cli_options, lights), 0, 1000000, "0..1000000"},
+    {"--seed", NUMBER_SEED, offsetof(cli_options, seed), 0, INT_MAX, "a whole number >= 0"},
+    {"--time", NUMBER_FLOAT, offsetof(cli_options, time), -1e6, 1e6, "seconds"},
+    {"--resize-cycle", NUMBER_INT, offsetof(cli_options, resize_cycle), 0, 100000, "0..100000"},
+    {"--minimise-cycle", NUMBER_INT, offsetof(cli_options, minimise_cycle), 0, 1000, "0..1000"},
+    {"--cutoff", NUMBER_DOUBLE, offsetof(cli_options, cutoff), 0, 1e6, "a number >= 0"},
+};
+
+/* Options without a value. */
+static const struct flag_option {
+    const char *name;
+    size_t offset;
+} flag_options[] = {
+    {"--bench", offsetof(cli_options, bench)},
+    {"--paused", offsetof(cli_options, paused)},
+    {"--gl-debug", offsetof(cli_options, gl_debug)},
+    {"--verbose", offsetof(cli_options, verbose)},
+};
+
+#define COUNT(array) ((int)(sizeof array / sizeof array[0]))
+
+static void set_defaults(const cli_desc *desc, cli_options *out)
 {
     memset(out, 0, sizeof *out);
     out->width = 800;
@@ -182,106 +215,148 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
 #endif
     for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++)
         out->extra_values[i] = desc->extras[i].default_value;
+}
 
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *v;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            cli_print_help(desc, stdout);
-            return CLI_PARSE_DONE;
-        } else if (strcmp(a, "--headless") == 0 || strcmp(a, "--headless=egl") == 0) {
-            out->headless = true;
-            out->backend = BACKEND_EGL;
-        } else if (strcmp(a, "--headless=osmesa") == 0) {
-            out->headless = true;
-            out->backend = BACKEND_OSMESA;
-        } else if (strncmp(a, "--headless=", 11) == 0) {
-            return usage_error(desc, "unknown headless backend '%s' (egl or osmesa)", a + 11);
-        } else if (strcmp(a, "--bench") == 0) {
-            out->bench = true;
-        } else if (strcmp(a, "--paused") == 0) {
-            out->paused = true;
-        } else if (strcmp(a, "--gl-debug") == 0) {
-            out->gl_debug = true;
-        } else if (strcmp(a, "--verbose") == 0) {
-            out->verbose = true;
-        } else if (is_option(a, "--size")) {
-            if (!(v = option_value(argc, argv, &i, "--size")))
-                return usage_error(desc, "%s needs a value WxH", a);
-            if (!parse_size(v, &out->width, &out->height))
-                return usage_error(desc, "bad --size '%s': expected WxH, each 1..65536", v);
-        } else if (is_option(a, "--frames")) {
-            if (!(v = option_value(argc, argv, &i, "--frames")) || !cli_parse_int(v, 1, INT_MAX, &out->frames))
-                return usage_error(desc, "bad --frames '%s': expected a whole number >= 1", v ? v : "");
-        } else if (is_option(a, "--warmup")) {
-            if (!(v = option_value(argc, argv, &i, "--warmup")) || !cli_parse_int(v, 0, 100000, &out->warmup))
-                return usage_error(desc, "bad --warmup '%s': expected a whole number >= 0", v ? v : "");
-        } else if (is_option(a, "--screenshot")) {
-            if (!(v = option_value(argc, argv, &i, "--screenshot")) || !*v)
-                return usage_error(desc, "%s needs a file name", "--screenshot");
-            out->screenshot = v;
-        } else if (is_option(a, "--scene")) {
-            if (!(v = option_value(argc, argv, &i, "--scene")) || !*v)
-                return usage_error(desc, "%s needs a file name", "--scene");
-            out->scene_path = v;
-        } else if (is_option(a, "--renderer")) {
-            if (!desc->renderers)
-                return usage_error(desc, "%s has a single renderer: --renderer is not available", desc->program);
-            if (!(v = option_value(argc, argv, &i, "--renderer")) || cli_choice_index(desc->renderers, v) < 0)
-                return usage_error(desc, "unknown renderer '%s'", v ? v : "");
-            out->renderer = v;
-        } else if (is_option(a, "--view")) {
-            if (!desc->views)
-                return usage_error(desc, "%s has no views: --view is not available", desc->program);
-            if (!(v = option_value(argc, argv, &i, "--view")) || cli_choice_index(desc->views, v) < 0)
-                return usage_error(desc, "unknown view '%s'", v ? v : "");
-            out->view = v;
-        } else if (is_option(a, "--lights")) {
-            if (!(v = option_value(argc, argv, &i, "--lights")) || !cli_parse_int(v, 0, 1000000, &out->lights))
-                return usage_error(desc, "bad --lights '%s': expected 0..1000000", v ? v : "");
-        } else if (is_option(a, "--seed")) {
-            int seed;
-            if (!(v = option_value(argc, argv, &i, "--seed")) || !cli_parse_int(v, 0, INT_MAX, &seed))
-                return usage_error(desc, "bad --seed '%s': expected a whole number >= 0", v ? v : "");
-            out->seed = (uint32_t)seed;
-        } else if (is_option(a, "--time")) {
-            double t;
-            if (!(v = option_value(argc, argv, &i, "--time")) || !cli_parse_double(v, -1e6, 1e6, &t))
-                return usage_error(desc, "bad --time '%s': expected seconds", v ? v : "");
-            out->time = (float)t;
-        } else if (is_option(a, "--resize-cycle")) {
-            if (!(v = option_value(argc, argv, &i, "--resize-cycle")) ||
-                !cli_parse_int(v, 0, 100000, &out->resize_cycle))
-                return usage_error(desc, "bad --resize-cycle '%s': expected 0..100000", v ? v : "");
-        } else if (is_option(a, "--minimise-cycle")) {
-            if (!(v = option_value(argc, argv, &i, "--minimise-cycle")) ||
-                !cli_parse_int(v, 0, 1000, &out->minimise_cycle))
-                return usage_error(desc, "bad --minimise-cycle '%s': expected 0..1000", v ? v : "");
-        } else if (is_option(a, "--cutoff")) {
-            if (!(v = option_value(argc, argv, &i, "--cutoff")) || !cli_parse_double(v, 0.0, 1e6, &out->cutoff))
-                return usage_error(desc, "bad --cutoff '%s': expected a number >= 0", v ? v : "");
-        } else if (strncmp(a, "--", 2) == 0) {
-            int k = 0;
-            for (; k < CLI_MAX_EXTRAS && desc->extras[k].name; k++) {
-                char opt[80];
-                snprintf(opt, sizeof opt, "--%s", desc->extras[k].name);
-                if (!is_option(a, opt))
-                    continue;
-                if (!(v = option_value(argc, argv, &i, opt)))
-                    return usage_error(desc, "%s needs a value", opt);
-                if (desc->extras[k].choices && cli_choice_index(desc->extras[k].choices, v) < 0) {
-                    char msg[160];
-                    snprintf(msg, sizeof msg, "bad %s '%%s'", opt);
-                    return usage_error(desc, msg, v);
-                }
-                out->extra_values[k] = v;
-                break;
-            }
-            if (k == CLI_MAX_EXTRAS || !desc->extras[k].name)
-                return usage_error(desc, "unknown option '%s'", a);
-        } else {
-            return usage_error(desc, "unexpected argument '%s'", a);
+static bool store_number(const struct number_option *o, const char *v, cli_options *out)
+{
+    char *field = (char *)out + o->offset;
+    int n;
+    double d;
+    switch (o->kind) {
+    case NUMBER_INT: return cli_parse_int(v, (long)o->lo, (long)o->hi, (int *)(void *)field);
+    case NUMBER_SEED:
+        if (!cli_parse_int(v, (long)o->lo, (long)o->hi, &n))
+            return false;
+        *(uint32_t *)(void *)field = (uint32_t)n;
+        return true;
+    case NUMBER_FLOAT:
+        if (!cli_parse_double(v, o->lo, o->hi, &d))
+            return false;
+        *(float *)(void *)field = (float)d;
+        return true;
+    case NUMBER_DOUBLE: return cli_parse_double(v, o->lo, o->hi, (double *)(void *)field);
+    }
+    return false;
+}
+
+/* A flag or a number option at argv[*i]: true when it is one (a bad value sets *rc), false if not. */
+static bool parse_table_option(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out, int *rc)
+{
+    const char *a = argv[*i], *v;
+    for (int k = 0; k < COUNT(flag_options); k++) {
+        if (strcmp(a, flag_options[k].name) == 0) {
+            *(bool *)(void *)((char *)out + flag_options[k].offset) = true;
+            return true;
         }
+    }
+    for (int k = 0; k < COUNT(number_options); k++) {
+        const struct number_option *o = &number_options[k];
+        if (!is_option(a, o->name))
+            continue;
+        if (!(v = option_value(argc, argv, i, o->name)) || !store_number(o, v, out)) {
+            char fmt[128];
+            snprintf(fmt, sizeof fmt, "bad %s '%%s': expected %s", o->name, o->expected);
+            *rc = usage_error(desc, fmt, v ? v : "");
+        }
+        return true;
+    }
+    return false;
+}
+
+/* --NAME VALUE of the chapter's own options. */
+static int parse_extra(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
+{
+    const char *a = argv[*i], *v;
+    for (int k = 0; k < CLI_MAX_EXTRAS && desc->extras[k].name; k++) {
+        char opt[80];
+        snprintf(opt, sizeof opt, "--%s", desc->extras[k].name);
+        if (!is_option(a, opt))
+            continue;
+        if (!(v = option_value(argc, argv, i, opt)))
+            return usage_error(desc, "%s needs a value", opt);
+        if (desc->extras[k].choices && cli_choice_index(desc->extras[k].choices, v) < 0) {
+            char msg[160];
+            snprintf(msg, sizeof msg, "bad %s '%%s'", opt);
+            return usage_error(desc, msg, v);
+        }
+        out->extra_values[k] = v;
+        return EXIT_CODE_OK;
+    }
+    return usage_error(desc, "unknown option '%s'", a);
+}
+
+/* --headless[=egl|osmesa]; returns false when argv[i] is not one. */
+static bool parse_headless(const char *a, cli_options *out)
+{
+    if (strcmp(a, "--headless") == 0 || strcmp(a, "--headless=egl") == 0)
+        out->backend = BACKEND_EGL;
+    else if (strcmp(a, "--headless=osmesa") == 0)
+        out->backend = BACKEND_OSMESA;
+    else
+        return false;
+    out->headless = true;
+    return true;
+}
+
+/* A file name, a renderer or a view. */
+static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
+{
+    const char *a = argv[*i], *v;
+    if (is_option(a, "--screenshot") || is_option(a, "--scene")) {
+        const char *name = is_option(a, "--scene") ? "--scene" : "--screenshot";
+        if (!(v = option_value(argc, argv, i, name)) || !*v)
+            return usage_error(desc, "%s needs a file name", name);
+        *(is_option(a, "--scene") ? &out->scene_path : &out->screenshot) = v;
+    } else if (is_option(a, "--renderer")) {
+        if (!desc->renderers)
+            return usage_error(desc, "%s has a single renderer: --renderer is not available", desc->program);
+        if (!(v = option_value(argc, argv, i, "--renderer")) || cli_choice_index(desc->renderers, v) < 0)
+            return usage_error(desc, "unknown renderer '%s'", v ? v : "");
+        out->renderer = v;
+    } else if (is_option(a, "--view")) {
+        if (!desc->views)
+            return usage_error(desc, "%s has no views: --view is not available", desc->program);
+        if (!(v = option_value(argc, argv, i, "--view")) || cli_choice_index(desc->views, v) < 0)
+            return usage_error(desc, "unknown view '%s'", v ? v : "");
+        out->view = v;
+    } else {
+        return parse_extra(argc, argv, i, desc, out);
+    }
+    return EXIT_CODE_OK;
+}
+
+/* One argument (and its value): an exit code, EXIT_CODE_OK to go on. */
+static int parse_argument(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
+{
+    const char *a = argv[*i], *v;
+    int rc = EXIT_CODE_OK;
+    if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+        cli_print_help(desc, stdout);
+        return CLI_PARSE_DONE;
+    }
+    if (parse_headless(a, out) || parse_table_option(argc, argv, i, desc, out, &rc))
+        return rc;
+    if (strncmp(a, "--headless=", 11) == 0)
+        return usage_error(desc, "unknown headless backend '%s' (egl or osmesa)", a + 11);
+    if (is_option(a, "--size")) {
+        if (!(v = option_value(argc, argv, i, "--size")))
+            return usage_error(desc, "%s needs a value WxH", a);
+        if (!parse_size(v, &out->width, &out->height))
+            return usage_error(desc, "bad --size '%s': expected WxH, each 1..65536", v);
+        return EXIT_CODE_OK;
+    }
+    if (strncmp(a, "--", 2) == 0)
+        return parse_text_option(argc, argv, i, desc, out);
+    return usage_error(desc, "unexpected argument '%s'", a);
+}
+
+int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
+{
+    set_defaults(desc, out);
+    for (int i = 1; i < argc; i++) {
+        int rc = parse_argument(argc, argv, &i, desc, out);
+        if (rc != EXIT_CODE_OK)
+            return rc;
     }
     if (out->frames < 0)
         out->frames = out->bench ? 10 : out->headless ? 1 : 0;
