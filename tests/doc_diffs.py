@@ -63,7 +63,9 @@ def main():
             nonlocal failures, pages
             pages += 1
             want, kept, total = block(root, m.group(1), m.group(2), m.group(3) or "")
-            if m.group(4) != want:
+            if m.group(4) != want and sys.argv[1] == "--update":
+                print(f"updated {page.relative_to(root)}: {kept} of {total} hunks")
+            elif m.group(4) != want:
                 failures += 1
                 print(f"{page.relative_to(root)}: the what-changed block differs from "
                       f"diff -u {m.group(1)} {m.group(2)} (run tests/doc_diffs.py --update .)")
