@@ -1,6 +1,7 @@
 /* app_hooks.c - the runner's test hooks (--resize-cycle, --minimise-cycle) and its --bench line. */
 #include "app_internal.h"
 
+#include "frame_stats.h"
 #include "gl_util.h"
 #include "log.h"
 #include "platform.h"
@@ -91,12 +92,6 @@ int app_hooks_check(const app_hooks *h, const app *a, const cli_options *opt)
     return EXIT_CODE_OK;
 }
 
-static int compare_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
-
 /* key=value output keeps values free of spaces. */
 static void print_token(const char *s)
 {
@@ -118,11 +113,7 @@ static void print_scene_name(const char *path)
 
 void app_bench_print(const app *a, double *ms, int n)
 {
-    qsort(ms, (size_t)n, sizeof *ms, compare_double);
-    double sum = 0;
-    for (int i = 0; i < n; i++)
-        sum += ms[i];
-    double median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+    const frame_stats st = frame_stats_of(ms, n);
     printf("bench: chapter=%s renderer=%s scene=", a->cli->program,
            a->cli->renderers ? a->cli->renderers[a->renderer] : "forward");
     print_scene_name(a->options->scene_path);
@@ -130,7 +121,7 @@ void app_bench_print(const app *a, double *ms, int n)
            "min_ms=%.3f max_ms=%.3f mean_ms=%.3f fps=%.2f cutoff=%.6g shaded_pixels=%ld clock=glFinish+monotonic "
            "backend=%s gl_renderer=",
            a->scene.light_count, a->gs.light_count, a->gs.culled_count, a->width, a->height, n,
-           a->options->warmup, median, ms[0], ms[n - 1], sum / n, median > 0 ? 1000.0 / median : 0.0, a->cutoff,
+           a->options->warmup, st.median, st.min, st.max, st.mean, st.median > 0 ? 1000.0 / st.median : 0.0, a->cutoff,
            a->shaded_pixels, platform_backend_name());
     print_token((const char *)glGetString(GL_RENDERER));
     printf("\n");

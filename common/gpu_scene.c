@@ -134,12 +134,7 @@ static void update_objects(gpu_scene *gs, float time)
         memcpy(t + 4 * SHADER_OBJECT_TEXEL_SHININESS, shininess, sizeof shininess);
     }
     size_t bytes = ((size_t)s->object_count + 1) * SHADER_OBJECT_TEXELS * 4 * sizeof(float);
-    glBindBuffer(GL_TEXTURE_BUFFER, gs->object_buffer);
-    glBufferData(GL_TEXTURE_BUFFER, (GLsizeiptr)bytes, gs->object_texels, GL_STREAM_DRAW);
-    glBindTexture(GL_TEXTURE_BUFFER, gs->object_texture);
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, gs->object_buffer);
-    glBindTexture(GL_TEXTURE_BUFFER, 0);
-    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    gl_texture_buffer_upload(gs->object_buffer, gs->object_texture, GL_RGBA32F, gs->object_texels, bytes);
 }
 
 static bool update_lights(gpu_scene *gs, float time, double cutoff)
@@ -183,13 +178,8 @@ static bool update_lights(gpu_scene *gs, float time, double cutoff)
     /* A texture buffer may not be empty: keep one texel so the binding stays valid with 0 lights. */
     static const float zero[4] = {0};
     size_t bytes = (size_t)gs->light_count * SHADER_LIGHT_TEXELS * 4 * sizeof(float);
-    glBindBuffer(GL_TEXTURE_BUFFER, gs->light_buffer);
-    glBufferData(GL_TEXTURE_BUFFER, bytes ? (GLsizeiptr)bytes : (GLsizeiptr)sizeof zero,
-                 bytes ? (const void *)gs->texels : zero, GL_STREAM_DRAW);
-    glBindTexture(GL_TEXTURE_BUFFER, gs->light_texture);
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, gs->light_buffer);
-    glBindTexture(GL_TEXTURE_BUFFER, 0);
-    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    gl_texture_buffer_upload(gs->light_buffer, gs->light_texture, GL_RGBA32F,
+                             bytes ? (const void *)gs->texels : zero, bytes ? bytes : sizeof zero);
     return true;
 }
 

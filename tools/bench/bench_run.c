@@ -1,4 +1,5 @@
 /* bench_run.c - see bench_run.h. */
+#include "frame_stats.h"
 #include "bench_run.h"
 
 #include "gl_util.h"
@@ -71,12 +72,6 @@ typedef struct case_plan {
     int frames[MAX_LIST], warmup[MAX_LIST];
     double *times[MAX_LIST]; /* frames[i] timed frames */
 } case_plan;
-
-static int compare_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
 
 /* A case predicted over --max-frame-ms is not drawn: its time is the prediction. One predicted over
  * --case-budget-ms gets fewer frames, so one slow renderer does not hold up the sweep. */
@@ -162,10 +157,10 @@ static void summarise_times(run_ctx *x, const case_desc *c, case_plan *p)
         int f = p->frames[i];
         double *t = p->times[i];
         if (f > 0) {
-            qsort(t, (size_t)f, sizeof(double), compare_double);
-            row->median_ms = f % 2 ? t[f / 2] : 0.5 * (t[f / 2 - 1] + t[f / 2]);
-            row->min_ms = t[0];
-            row->max_ms = t[f - 1];
+            const frame_stats st = frame_stats_of(t, f);
+            row->median_ms = st.median;
+            row->min_ms = st.min;
+            row->max_ms = st.max;
         }
         if (c->histories)
             history_add(&c->histories[row->renderer], c->lights, row->median_ms);
