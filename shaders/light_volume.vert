@@ -7,6 +7,7 @@
 // Otherwise (chapter 05 on): instance i is light u_light_index[u_first_instance + i], its volume
 // the light's own solved radius.
 #include "shading.glsl"
+#include "fullscreen.glsl"
 
 layout(location = 0) in vec3 a_position;
 
@@ -42,8 +43,7 @@ void main()
     v_light_radiance = L.radiance;
     v_light_attenuation = L.attenuation;
     if (fullscreen) {
-        vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-        gl_Position = vec4(2.0 * p - 1.0, 0.0, 1.0);
+        gl_Position = fullscreen_position(gl_VertexID);
     } else {
         gl_Position = u_view_proj * vec4(L.position + a_position * (v_volume_radius * u_mesh_scale), 1.0);
     }
