@@ -56,14 +56,48 @@ static bool make_target(app *a)
 
 static int min_int(int x, int y) { return x < y ? x : y; }
 
+/* The largest target this context can make: textures, renderbuffers and the viewport all limit it. */
+typedef struct size_limits {
+    GLint max_tex, max_rb, max_vp[2];
+    int width, height;
+} size_limits;
+
+static size_limits query_size_limits(void)
+{
+    size_limits l = {0};
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &l.max_tex);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &l.max_rb);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, l.max_vp);
+    l.width = min_int(min_int(l.max_tex, l.max_rb), l.max_vp[0]);
+    l.height = min_int(min_int(l.max_tex, l.max_rb), l.max_vp[1]);
+    return l;
+}
+
+/* --gl-info: key=value lines, so that scripts (the size tests) can ask the context; no scene. */
+static int print_gl_info(const cli_options *opt, const char *program)
+{
+    const platform_desc pd = {.backend = opt->backend, .width = 16, .height = 16, .title = program};
+    int rc = platform_create(&pd);
+    if (rc != EXIT_CODE_OK)
+        return rc;
+    size_limits l = query_size_limits();
+    GLint draw_buffers = 0;
+    glGetIntegerv(GL_MAX_DRAW_BUFFERS, &draw_buffers);
+    printf("gl: backend=%s max_width=%d max_height=%d max_texture_size=%d max_renderbuffer_size=%d "
+           "max_viewport=%dx%d max_draw_buffers=%d\n",
+           platform_backend_name(), l.width, l.height, l.max_tex, l.max_rb, l.max_vp[0], l.max_vp[1],
+           draw_buffers);
+    printf("gl: renderer=%s\n", (const char *)glGetString(GL_RENDERER));
+    printf("gl: version=%s\n", (const char *)glGetString(GL_VERSION));
+    platform_destroy();
+    return EXIT_CODE_OK;
+}
+
 static bool check_size_limits(int width, int height)
 {
-    GLint max_tex = 0, max_rb = 0, max_vp[2] = {0, 0};
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
-    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_rb);
-    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_vp);
-    int limit_w = min_int(min_int(max_tex, max_rb), max_vp[0]);
-    int limit_h = min_int(min_int(max_tex, max_rb), max_vp[1]);
+    const size_limits l = query_size_limits();
+    const GLint max_tex = l.max_tex, max_rb = l.max_rb, *max_vp = l.max_vp;
+    const int limit_w = l.width, limit_h = l.height;
     if (width > limit_w || height > limit_h) {
         log_error("--size %dx%d is larger than this GL allows (%dx%d: GL_MAX_TEXTURE_SIZE %d, "
                   "GL_MAX_RENDERBUFFER_SIZE %d, GL_MAX_VIEWPORT_DIMS %dx%d)",
@@ -306,6 +340,8 @@ int app_run(const app_desc *desc, int argc, char **argv)
     app a;
     app_init(&a, desc, &opt);
     a.cli = &cli;
+    if (opt.gl_info)
+        return print_gl_info(&opt, desc->cli.program);
     if ((rc = app_open(&a, desc, &opt)) != EXIT_CODE_OK)
         return rc;
 

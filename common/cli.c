@@ -81,6 +81,7 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --minimise-cycle N       window: after the first frame, minimise and restore N times;\n"
             "                           fail if a frame was drawn while minimised or GL objects leaked\n"
             "                           (exit 77 when nothing can minimise it: no window manager)\n"
+            "  --gl-info                print the GL context's renderer, version and limits, then exit\n"
             "  --verbose                more log lines\n",
             desc->default_cutoff);
     /* The chapter's own keys, then the ones app.c gives every chapter. */
@@ -193,6 +194,7 @@ static const struct flag_option {
     {"--paused", offsetof(cli_options, paused)},
     {"--gl-debug", offsetof(cli_options, gl_debug)},
     {"--verbose", offsetof(cli_options, verbose)},
+    {"--gl-info", offsetof(cli_options, gl_info)},
 };
 
 #define COUNT(array) ((int)(sizeof array / sizeof array[0]))

@@ -63,6 +63,7 @@ typedef struct cli_options {
     int resize_cycle;     /* resize N times after the first frame, then check for leaked GL objects */
     int minimise_cycle;   /* window: minimise and restore N times; no frame may be drawn while minimised */
     bool verbose;
+    bool gl_info;         /* print the context's renderer, version and limits, and exit */
     const char *extra_values[CLI_MAX_EXTRAS];
 } cli_options;
 
