@@ -3,6 +3,7 @@
 
 #include "log.h"
 #include "shader_layout.h"
+#include "shader_log.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -160,19 +161,24 @@ static bool append_source(source_text *s, const char *label, const char *text, c
     return ok;
 }
 
-/* Mesa writes "S:L(C): error: ..."; print "shaders/file.glsl:L:C: error: ..." instead. */
+/* Each message at its file and line: "shaders/file.glsl:L[:C]: error: ..." (shader_log.h knows the
+ * drivers' formats). */
 static void log_info_log(const source_text *s, const char *what, const char *log)
 {
     log_error("%s failed:", what);
     for (const char *line = log; *line;) {
         const char *end = strchr(line, '\n');
         int n = end ? (int)(end - line) : (int)strlen(line);
-        int src, ln, col, used = 0;
-        if (sscanf(line, "%d:%d(%d): %n", &src, &ln, &col, &used) == 3 && used > 0 && src >= 0 &&
-            src < s->count)
-            log_error("%s:%d:%d: %.*s", s->names[src], ln, col, n - used, line + used);
-        else if (n > 0)
+        shader_log_line p;
+        if (shader_log_parse(line, n, &p) && p.source < s->count) {
+            char place[160];
+            int k = snprintf(place, sizeof place, "%s:%d", s->names[p.source], p.line);
+            if (p.column > 0 && k > 0 && k < (int)sizeof place)
+                snprintf(place + k, sizeof place - (size_t)k, ":%d", p.column);
+            log_error("%s: %s%s%.*s", place, p.severity, *p.severity ? ": " : "", p.message_len, p.message);
+        } else if (n > 0) {
             log_error("%.*s", n, line);
+        }
         line = end ? end + 1 : line + n;
     }
 }

@@ -60,7 +60,8 @@ int main(void)
     /* 4. A GL_INVALID_OPERATION from the state machine rather than an argument check. */
     before = gl_debug_error_count();
     glUseProgram(12345); /* no such program */
-    expect(gl_debug_error_count() == before + 1, "glUseProgram(unknown) is counted by the callback");
+    /* At least one error: drivers word and count their messages differently (NVIDIA sends more). */
+    expect(gl_debug_error_count() > before, "glUseProgram(unknown) is counted by the callback");
     gl_check("glUseProgram(12345)");
 
     gl_framebuffer_destroy(&framebuffer);
