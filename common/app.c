@@ -2,6 +2,7 @@
 #include "app.h"
 
 #include "app_internal.h"
+#include "data_dir.h"
 #include "gl_util.h"
 #include "image.h"
 #include "light.h"
@@ -251,12 +252,18 @@ static int run_loop(app *a, loop *l)
 static int app_open(app *a, const app_desc *desc, const cli_options *opt)
 {
     /* Input first: a bad scene is reported the same with or without a GL context. */
-    if (!scene_load(opt->scene_path, &a->scene))
+    if (!scene_load(opt->scene_path, &a->scene)) {
+        if (opt->scene_path == a->default_scene)
+            log_error("the default scene is looked for in the data folder %s (from %s): give --scene, "
+                      "--data-dir or COURSE_DATA_DIR",
+                      data_dir(), data_dir_origin());
         return EXIT_CODE_USAGE;
+    }
     if (opt->lights >= 0 && !light_generate(&a->scene, opt->lights, opt->seed)) {
         scene_destroy(&a->scene);
         return EXIT_CODE_RUNTIME;
     }
+    log_debug("data folder %s (from %s)", data_dir(), data_dir_origin());
     const platform_desc pd = {
         .backend = opt->backend, .width = opt->width, .height = opt->height, .title = desc->cli.program,
         .gl_debug = opt->gl_debug};
@@ -337,9 +344,14 @@ int app_run(const app_desc *desc, int argc, char **argv)
         return rc == CLI_PARSE_DONE ? 0 : rc;
     log_set_verbose(opt.verbose);
     log_set_quiet(opt.bench);
+    data_dir_set(opt.data_dir);
     app a;
     app_init(&a, desc, &opt);
     a.cli = &cli;
+    if (!opt.scene_path)
+        opt.scene_path = data_dir_path(CLI_DEFAULT_SCENE, a.default_scene, sizeof a.default_scene)
+                             ? a.default_scene
+                             : CLI_DEFAULT_SCENE;
     if (opt.gl_info)
         return print_gl_info(&opt, desc->cli.program);
     if ((rc = app_open(&a, desc, &opt)) != EXIT_CODE_OK)

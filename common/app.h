@@ -40,6 +40,7 @@ typedef struct app {
     long frame_index;
     GLuint query;       /* a GL_SAMPLES_PASSED query for the chapter's lighting pass */
     long shaded_pixels; /* what the chapter counted with it in the last frame; -1 if not */
+    char default_scene[4200]; /* the data folder's default scene, when no --scene was given */
 } app;
 
 typedef struct app_desc {

@@ -10,9 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifndef COURSE_DEFAULT_SCENE
-#define COURSE_DEFAULT_SCENE "assets/scenes/default.scene"
-#endif
 
 int cli_choice_index(const char *const *choices, const char *value)
 {
@@ -40,8 +37,11 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --frames N               frames to render, then exit (window default: until closed;\n"
             "                           headless default: 1)\n"
             "  --screenshot PATH        write the last frame as PNG (atomically)\n"
-            "  --scene PATH             scene file (default %s)\n",
-            COURSE_DEFAULT_SCENE);
+            "  --scene PATH             scene file (default: %s in the data folder)\n"
+            "  --data-dir DIR           the folder with shaders/ and assets/ (default: $COURSE_DATA_DIR,\n"
+            "                           else an installed prefix's share/deferred_course, else the\n"
+            "                           source tree)\n",
+            CLI_DEFAULT_SCENE);
     if (desc->renderers) {
         fprintf(stream, "  --renderer NAME          ");
         print_choices(stream, desc->renderers);
@@ -206,7 +206,6 @@ static void set_defaults(const cli_desc *desc, cli_options *out)
     out->height = 600;
     out->frames = -1;
     out->warmup = 3;
-    out->scene_path = COURSE_DEFAULT_SCENE;
     out->renderer = desc->renderers ? desc->renderers[0] : NULL;
     out->view = desc->views ? desc->views[0] : NULL;
     out->lights = -1;
@@ -265,6 +264,22 @@ static bool parse_table_option(int argc, char **argv, int *i, const cli_desc *de
     return false;
 }
 
+/* `value` when it is one of `choices`; otherwise a message that lists them. */
+static int parse_choice(const cli_desc *desc, const char *what, const char *value, const char *const *choices,
+                        const char **out)
+{
+    if (value && cli_choice_index(choices, value) >= 0) {
+        *out = value;
+        return EXIT_CODE_OK;
+    }
+    char fmt[400];
+    int n = snprintf(fmt, sizeof fmt, "unknown %s '%%s' (one of:", what);
+    for (int k = 0; choices[k] && n > 0 && n < (int)sizeof fmt - 64; k++)
+        n += snprintf(fmt + n, sizeof fmt - (size_t)n, " %s", choices[k]);
+    snprintf(fmt + n, sizeof fmt - (size_t)n, ")");
+    return usage_error(desc, fmt, value ? value : "");
+}
+
 /* --NAME VALUE of the chapter's own options. */
 static int parse_extra(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
 {
@@ -276,13 +291,13 @@ static int parse_extra(int argc, char **argv, int *i, const cli_desc *desc, cli_
             continue;
         if (!(v = option_value(argc, argv, i, opt)))
             return usage_error(desc, "%s needs a value", opt);
-        if (desc->extras[k].choices && cli_choice_index(desc->extras[k].choices, v) < 0) {
-            char msg[160];
-            snprintf(msg, sizeof msg, "bad %s '%%s'", opt);
-            return usage_error(desc, msg, v);
+        if (!desc->extras[k].choices) {
+            out->extra_values[k] = v;
+            return EXIT_CODE_OK;
         }
-        out->extra_values[k] = v;
-        return EXIT_CODE_OK;
+        char what[90];
+        snprintf(what, sizeof what, "%s value", opt);
+        return parse_choice(desc, what, v, desc->extras[k].choices, &out->extra_values[k]);
     }
     return usage_error(desc, "unknown option '%s'", a);
 }
@@ -304,27 +319,33 @@ static bool parse_headless(const char *a, cli_options *out)
 static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
 {
     const char *a = argv[*i], *v;
-    if (is_option(a, "--screenshot") || is_option(a, "--scene")) {
-        const char *name = is_option(a, "--scene") ? "--scene" : "--screenshot";
-        if (!(v = option_value(argc, argv, i, name)) || !*v)
-            return usage_error(desc, "%s needs a file name", name);
-        *(is_option(a, "--scene") ? &out->scene_path : &out->screenshot) = v;
-    } else if (is_option(a, "--renderer")) {
+    static const struct {
+        const char *name;
+        size_t offset;
+    } paths[] = {{"--screenshot", offsetof(cli_options, screenshot)},
+                 {"--scene", offsetof(cli_options, scene_path)},
+                 {"--data-dir", offsetof(cli_options, data_dir)}};
+    for (int k = 0; k < COUNT(paths); k++) {
+        if (!is_option(a, paths[k].name))
+            continue;
+        if (!(v = option_value(argc, argv, i, paths[k].name)) || !*v)
+            return usage_error(desc, "%s needs a file name", paths[k].name);
+        *(const char **)(void *)((char *)out + paths[k].offset) = v;
+        return EXIT_CODE_OK;
+    }
+    if (is_option(a, "--renderer")) {
         if (!desc->renderers)
             return usage_error(desc, "%s has a single renderer: --renderer is not available", desc->program);
-        if (!(v = option_value(argc, argv, i, "--renderer")) || cli_choice_index(desc->renderers, v) < 0)
-            return usage_error(desc, "unknown renderer '%s'", v ? v : "");
-        out->renderer = v;
-    } else if (is_option(a, "--view")) {
+        v = option_value(argc, argv, i, "--renderer");
+        return parse_choice(desc, "renderer", v, desc->renderers, &out->renderer);
+    }
+    if (is_option(a, "--view")) {
         if (!desc->views)
             return usage_error(desc, "%s has no views: --view is not available", desc->program);
-        if (!(v = option_value(argc, argv, i, "--view")) || cli_choice_index(desc->views, v) < 0)
-            return usage_error(desc, "unknown view '%s'", v ? v : "");
-        out->view = v;
-    } else {
-        return parse_extra(argc, argv, i, desc, out);
+        v = option_value(argc, argv, i, "--view");
+        return parse_choice(desc, "view", v, desc->views, &out->view);
     }
-    return EXIT_CODE_OK;
+    return parse_extra(argc, argv, i, desc, out);
 }
 
 /* One argument (and its value): an exit code, EXIT_CODE_OK to go on. */

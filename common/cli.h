@@ -20,7 +20,8 @@
 #include <stdio.h>
 
 #define CLI_MAX_EXTRAS 8
-#define CLI_MAX_SIZE 65536 /* a sanity bound; the GL limit is checked once a context exists */
+#define CLI_MAX_SIZE 65536
+#define CLI_DEFAULT_SCENE "assets/scenes/default.scene" /* relative to the data folder */ /* a sanity bound; the GL limit is checked once a context exists */
 
 enum { CLI_PARSE_DONE = -1 }; /* cli_parse: --help was printed, exit 0 */
 
@@ -50,7 +51,8 @@ typedef struct cli_options {
     int frames;           /* 0: until the window closes (headless: 1) */
     int warmup;           /* frames not timed by --bench */
     const char *screenshot;
-    const char *scene_path;
+    const char *scene_path; /* NULL: CLI_DEFAULT_SCENE in the data folder (common/data_dir.h) */
+    const char *data_dir;   /* --data-dir, or NULL */
     const char *renderer;
     const char *view;
     int lights;           /* -1: the scene's own */

@@ -1,6 +1,7 @@
 /* gl_util.c - see gl_util.h. */
 #include "gl_util.h"
 
+#include "data_dir.h"
 #include "log.h"
 #include "shader_layout.h"
 #include "shader_log.h"
@@ -9,9 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifndef COURSE_SHADER_DIR
-#define COURSE_SHADER_DIR "shaders"
-#endif
 
 #define MAX_SOURCES 16
 
@@ -23,8 +21,13 @@ static struct {
 
 const char *gl_shader_dir(void)
 {
+    static char dir[4200];
     const char *env = getenv("COURSE_SHADER_DIR");
-    return env && *env ? env : COURSE_SHADER_DIR;
+    if (env && *env)
+        return env;
+    if (!data_dir_path("shaders", dir, sizeof dir))
+        return "shaders";
+    return dir;
 }
 
 /* ---- sources with #include ------------------------------------------------------------- */
@@ -91,7 +94,7 @@ static bool append_file(source_text *s, const char *name, const char *defines, i
         log_error("shaders/%s: includes nested too deeply", name);
         return false;
     }
-    char path[1024];
+    char path[4400];
     snprintf(path, sizeof path, "%s/%s", gl_shader_dir(), name);
     char *text = read_file(path);
     if (!text) {

@@ -15,7 +15,8 @@
  *   gl_check(where)                       glGetError loop; logs and returns false on error
  *   gl_debug_enable()                     KHR_debug messages to the log; errors are remembered
  *   gl_debug_error_count()                GL errors seen since gl_debug_enable (or by gl_check)
- *   gl_shader_dir()                       where shaders are read from ($COURSE_SHADER_DIR overrides)
+ *   gl_shader_dir()                       where shaders are read from: data_dir()/shaders, or
+ *                                         $COURSE_SHADER_DIR
  *   gl_draw_fullscreen()                  one triangle covering the viewport (gl_VertexID based)
  *   gl_pass_state_apply(state)            blend, cull, depth test, depth write and depth clamp from
  *                                         one literal (zero fields: off)

@@ -3,7 +3,7 @@
 function(chapters_01_03_tests)
   if(TARGET 01_fbo_setup AND TARGET 00_forward)
     # Drawing into our own framebuffer and copying it texel for pixel changes nothing: exact.
-    course_agreement_test(01_vs_forward 0 0 01_fbo_setup VS 00_forward)
+    course_forward_agreement_test(01_vs_forward 0 0 01_fbo_setup)
   endif()
 
   if(TARGET 02_mrt_gbuffer)
@@ -17,13 +17,11 @@ function(chapters_01_03_tests)
     # Deferred matches forward to 1/255 on 99.99 % of pixels. Measured on llvmpipe: no pixel
     # differs by more than 1; the 1s come from the albedo's 8-bit sRGB storage (with RGBA32F
     # targets only 0.08 % of channels differ, by 1). docs/03_fullscreen_phong.md has the numbers.
-    course_agreement_test(03_vs_forward 1 0.0001 03_fullscreen_phong VS 00_forward)
+    course_forward_agreement_test(03_vs_forward 1 0.0001 03_fullscreen_phong)
     # Another aspect ratio and size: the position rebuilt from depth uses the viewport size.
-    course_agreement_test(03_vs_forward_200x300 1 0.0001
-      03_fullscreen_phong --size 200x300 VS 00_forward --size 200x300)
+    course_forward_agreement_test(03_vs_forward_200x300 1 0.0001 03_fullscreen_phong --size 200x300)
     # The orange light has moved: light positions come from the same per-frame update.
-    course_agreement_test(03_vs_forward_time3 1 0.0001
-      03_fullscreen_phong --time 3 VS 00_forward --time 3)
+    course_forward_agreement_test(03_vs_forward_time3 1 0.0001 03_fullscreen_phong --time 3)
     # The R key's other renderer is chapter 00's, bit for bit.
     course_agreement_test(03_renderer_forward 0 0 03_fullscreen_phong --renderer forward VS 00_forward)
     # The reach view: at cut-off 0.1 each light reaches part of the scene (the grey steps), and

@@ -41,9 +41,8 @@ function(chapters_04_07_tests)
 
   if(TARGET 06_additive_blending AND TARGET 00_forward)
     # The first volume chapter that matches forward: the lights are added up.
-    course_agreement_test(06_vs_forward 1 0.0001 06_additive_blending VS 00_forward)
-    course_agreement_test(06_vs_forward_cutoff 1 0.0001
-      06_additive_blending --cutoff 0.15 VS 00_forward --cutoff 0.15)
+    course_forward_agreement_test(06_vs_forward 1 0.0001 06_additive_blending)
+    course_forward_agreement_test(06_vs_forward_cutoff 1 0.0001 06_additive_blending --cutoff 0.15)
     course_agreement_test(06_renderer_forward 0 0 06_additive_blending --renderer forward VS 00_forward)
     # overlap.scene sums to well above 1. With RGBA32F accumulation it matches forward to 1/255.
     course_agreement_test(06_overlap_rgba32f_vs_forward 1 0.0001
@@ -51,8 +50,8 @@ function(chapters_04_07_tests)
       VS 00_forward --scene ${S}/overlap.scene)
     # With RGBA16F: measured max 2/255 on 0.44 % of pixels, where 12 half-float roundings of sums
     # near 1 add to the G-buffer's 1/255 (docs/06_additive_blending.md). Bound 2, and no 3s.
-    course_agreement_test(06_overlap_rgba16f_vs_forward 2 0
-      06_additive_blending --scene ${S}/overlap.scene VS 00_forward --scene ${S}/overlap.scene)
+    course_forward_agreement_test(06_overlap_rgba16f_vs_forward 2 0
+      06_additive_blending --scene ${S}/overlap.scene)
     # The 8-bit buffer clips every blend at 1: a tone map cannot bring the overlaps back.
     course_golden_test(06_additive_blending_rgba8_reinhard 06_additive_blending 1 0.0001
       --scene ${S}/overlap.scene --accum rgba8 --tonemap reinhard)
@@ -67,7 +66,7 @@ function(chapters_04_07_tests)
   endif()
 
   if(TARGET 07_face_culling AND TARGET 00_forward)
-    course_agreement_test(07_vs_forward 1 0.0001 07_face_culling VS 00_forward)
+    course_forward_agreement_test(07_vs_forward 1 0.0001 07_face_culling)
     course_agreement_test(07_renderer_forward 0 0 07_face_culling --renderer forward VS 00_forward)
     foreach(case "time3|--time@3" "inside_volume|--scene@${S}/inside_volume.scene"
                  "far_plane|--scene@${S}/far_plane.scene" "near_plane|--scene@${S}/near_plane.scene"
@@ -76,23 +75,20 @@ function(chapters_04_07_tests)
       list(GET parts 0 name)
       list(GET parts 1 args)
       string(REPLACE "@" ";" args "${args}")
-      course_agreement_test(07_vs_forward_${name} 1 0.0001 07_face_culling ${args} VS 00_forward ${args})
+      course_forward_agreement_test(07_vs_forward_${name} 1 0.0001 07_face_culling ${args})
     endforeach()
     # 64 generated lights put 64 cut-off spheres through the picture. Where a sphere passes through
     # a pixel, the position rebuilt from depth and forward's interpolated position (which differ by
     # the depth buffer's precision, docs/hard-cases.md case 5) can fall on opposite sides of it, and
     # the light's cut-off step (up to 10/255 in dark areas) shows in one picture only. Measured:
     # 8 pixels of 76,800 (0.0104 %), max 10/255; the bound allows 0.02 % (15 pixels).
-    course_agreement_test(07_vs_forward_lights64 1 0.0002
-      07_face_culling --lights 64 VS 00_forward --lights 64)
+    course_forward_agreement_test(07_vs_forward_lights64 1 0.0002 07_face_culling --lights 64)
     # The course's claim at full size: the default scene and the city (757 lights, 2,490 cubes) at
     # 800x800 give chapter 00's picture. Measured: default 3 pixels over 1/255 (0.0005 %), city
     # 63 pixels (0.0098 %, the cut-off spheres of 757 lights, as above) — both within 99.99 %.
-    course_agreement_test(07_vs_forward_default_800 1 0.0001
-      07_face_culling --size 800x800 VS 00_forward --size 800x800)
-    course_agreement_test(07_vs_forward_city_800 1 0.0001
-      07_face_culling --size 800x800 --scene assets/scenes/city.scene
-      VS 00_forward --size 800x800 --scene assets/scenes/city.scene)
+    course_forward_agreement_test(07_vs_forward_default_800 1 0.0001 07_face_culling --size 800x800)
+    course_forward_agreement_test(07_vs_forward_city_800 1 0.0001
+      07_face_culling --size 800x800 --scene assets/scenes/city.scene)
     # The bugs chapter 07 shows, each on the scene where it appears.
     # (At the default cut-off the camera is inside every volume, so only back faces are on screen:
     # smaller volumes show the doubling.)
@@ -120,7 +116,7 @@ function(chapters_04_07_tests)
     add_test(NAME chapters.07_bad_cull COMMAND 07_face_culling --headless --cull sideways
       WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
     set_tests_properties(chapters.07_bad_cull PROPERTIES LABELS golden
-      PASS_REGULAR_EXPRESSION "bad --cull 'sideways'")
+      PASS_REGULAR_EXPRESSION "unknown --cull value 'sideways' \\(one of: front back none\\)")
   endif()
   if(TARGET 06_additive_blending)
     add_test(NAME chapters.06_bad_exposure

@@ -4,6 +4,8 @@
 #       BINARY's picture must match tests/golden/NAME.png. `update-goldens` rewrites these.
 #   course_agreement_test(NAME TOLERANCE MAX_FRACTION BINARY_A ARGS_A... VS BINARY_B ARGS_B...)
 #       two renderings of the same frame must agree.
+#   course_forward_agreement_test(NAME TOLERANCE MAX_FRACTION BINARY [ARGS...])
+#       BINARY with ARGS must agree with 00_forward given the same ARGS.
 #
 # Every render runs with --gl-debug, so a GL error fails the test.
 # Tolerances: llvmpipe is deterministic (byte-identical PNGs across runs and thread counts), so a
@@ -48,6 +50,10 @@ function(course_agreement_test name tolerance fraction)
             -- $<TARGET_FILE:${bin_b}> ${COURSE_RENDER_ARGS} ${cmd_b}
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(agree.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+endfunction()
+
+function(course_forward_agreement_test name tolerance fraction binary)
+  course_agreement_test(${name} ${tolerance} ${fraction} ${binary} ${ARGN} VS 00_forward ${ARGN})
 endfunction()
 
 # Every chapter's own picture on the default scene.

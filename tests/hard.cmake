@@ -35,10 +35,8 @@ endforeach()
 if(TARGET 07_face_culling AND TARGET 00_forward)
   set(HARD_07 07_face_culling)
   # 1. a culled light and a constant-attenuation (full-screen) light, and the exact cut-off 0
-  course_agreement_test(hard_culled 1 0.0001
-    ${HARD_07} --scene tests/scenes/hard_culled.scene VS 00_forward --scene tests/scenes/hard_culled.scene)
-  course_agreement_test(hard_cutoff0 1 0.0001
-    ${HARD_07} --cutoff 0 VS 00_forward --cutoff 0)
+  course_forward_agreement_test(hard_culled 1 0.0001 ${HARD_07} --scene tests/scenes/hard_culled.scene)
+  course_forward_agreement_test(hard_cutoff0 1 0.0001 ${HARD_07} --cutoff 0)
   add_test(NAME hard.bench_culled COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_hard_bench.sh
            $<TARGET_FILE:${HARD_07}> ${CMAKE_SOURCE_DIR}/tests/scenes/hard_culled.scene)
   set_tests_properties(hard.bench_culled PROPERTIES LABELS hard SKIP_RETURN_CODE 77)
@@ -47,8 +45,7 @@ if(TARGET 07_face_culling AND TARGET 00_forward)
   # 8, 9 through the binaries as well (the in-process tests read the float buffers). The 200-light
   # overlap is compared in-process only: its pictures differ by a few levels (case 7 in the doc).
   foreach(scene hard_hdr1e6 hard_degenerate)
-    course_agreement_test(${scene} 1 0.0001
-      ${HARD_07} --scene tests/scenes/${scene}.scene VS 00_forward --scene tests/scenes/${scene}.scene)
+    course_forward_agreement_test(${scene} 1 0.0001 ${HARD_07} --scene tests/scenes/${scene}.scene)
   endforeach()
   # 12. extreme sizes
   add_test(NAME hard.sizes COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_hard_sizes.sh $<TARGET_FILE:imgdiff>

@@ -64,3 +64,7 @@ if(TARGET 00_forward)
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(robust.inputs PROPERTIES LABELS robust SKIP_RETURN_CODE 77)
 endif()
+
+# The binaries run from any folder, and an installed prefix works after being moved.
+add_test(NAME robust.install COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_install.sh ${CMAKE_BINARY_DIR})
+set_tests_properties(robust.install PROPERTIES LABELS robust SKIP_RETURN_CODE 77)

@@ -3,12 +3,11 @@
  * Golden and agreement tests call this with the expected image first. It prints one line of statistics
  * and exits 0 (pass), 1 (the images differ beyond the bound) or 2 (bad usage or unreadable input).
  */
+#include "cli.h"
 #include "image.h"
 #include "log.h"
 
-#include <errno.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 enum { EXIT_PASS = 0, EXIT_DIFFER = 1, EXIT_USAGE = 2 };
@@ -37,28 +36,6 @@ static void print_usage(FILE *out)
           out);
 }
 
-static bool parse_int(const char *text, int *out)
-{
-    char *end;
-    errno = 0;
-    long v = strtol(text, &end, 10);
-    if (errno || end == text || *end || v < 0 || v > 255)
-        return false;
-    *out = (int)v;
-    return true;
-}
-
-static bool parse_fraction(const char *text, double *out)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(text, &end);
-    if (errno || end == text || *end || !(v >= 0.0 && v <= 1.0))
-        return false;
-    *out = v;
-    return true;
-}
-
 /* Returns -1 when the options are usable, otherwise the exit status. */
 static int parse_options(int argc, char **argv, options *opt)
 {
@@ -84,12 +61,12 @@ static int parse_options(int argc, char **argv, options *opt)
         } else if (strcmp(arg, "--quiet") == 0) {
             opt->quiet = true;
         } else if (strcmp(arg, "--tolerance") == 0) {
-            if (!parse_int(value, &opt->tolerance)) {
+            if (!cli_parse_int(value, 0, 255, &opt->tolerance)) {
                 log_error("imgdiff: --tolerance wants an integer 0..255, not '%s'", value);
                 return EXIT_USAGE;
             }
         } else if (strcmp(arg, "--max-fraction") == 0) {
-            if (!parse_fraction(value, &opt->max_fraction)) {
+            if (!cli_parse_double(value, 0.0, 1.0, &opt->max_fraction)) {
                 log_error("imgdiff: --max-fraction wants a number 0..1, not '%s'", value);
                 return EXIT_USAGE;
             }

@@ -13,19 +13,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_util.h"
+
 #define MAX_ARGS 64
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-static const char *const RENDERERS[] = {"deferred", "forward", "forward-naive", NULL};
-static const char *const VIEWS[] = {"final", "albedo", "normal", "depth", NULL};
 static const char *const MODES[] = {"on", "off", NULL};
 
 static const cli_desc DESC = {
     .program = "fuzz_cli",
     .summary = "command-line fuzzing target",
-    .renderers = RENDERERS,
-    .views = VIEWS,
+    .renderers = (const char *const[]){"deferred", "forward", "forward-naive", NULL},
+    .views = (const char *const[]){"final", "albedo", "normal", "depth", NULL},
     .keys = "  R  next renderer\n",
     .extras = {{.name = "mode", .metavar = "M", .help = "a choice", .choices = MODES, .default_value = "on"},
                {.name = "label", .metavar = "TEXT", .help = "free text"}},
@@ -33,11 +33,9 @@ static const cli_desc DESC = {
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char *text = malloc(size + 1);
+    char *text = fuzz_text(data, size);
     if (!text)
         return 0;
-    memcpy(text, data, size);
-    text[size] = '\0';
 
     char *argv[MAX_ARGS + 2];
     int argc = 0;
@@ -59,17 +57,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         /* What the rest of the course trusts once the parser said yes. */
         if (o.width < 1 || o.width > CLI_MAX_SIZE || o.height < 1 || o.height > CLI_MAX_SIZE)
             abort();
-        if (o.frames < 0 || o.warmup < 0 || !(o.cutoff >= 0.0) || !o.scene_path)
-            abort();
-        if (cli_choice_index(RENDERERS, o.renderer) < 0 || cli_choice_index(VIEWS, o.view) < 0)
+        if (o.frames < 0 || o.warmup < 0 || !(o.cutoff >= 0.0) || (o.scene_path && !*o.scene_path))
+            abort(); /* no --scene: NULL, the data folder's default scene */
+        if (cli_choice_index(DESC.renderers, o.renderer) < 0 || cli_choice_index(DESC.views, o.view) < 0)
             abort();
         const char *mode = cli_extra_value(&DESC, &o, "mode");
         if (!mode || cli_choice_index(MODES, mode) < 0)
             abort();
         /* Every string the options point at must be readable. */
-        size_t total = strlen(o.scene_path) + strlen(o.renderer) + strlen(o.view);
-        if (o.screenshot)
-            total += strlen(o.screenshot);
+        size_t total = strlen(o.renderer) + strlen(o.view);
+        const char *paths[] = {o.scene_path, o.screenshot, o.data_dir};
+        for (size_t i = 0; i < sizeof paths / sizeof paths[0]; i++)
+            total += paths[i] ? strlen(paths[i]) : 0;
         const char *label = cli_extra_value(&DESC, &o, "label");
         if (label)
             total += strlen(label);

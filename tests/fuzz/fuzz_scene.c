@@ -14,16 +14,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_util.h"
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     /* scene_parse_string takes a C string: a NUL inside the input just ends it early. */
-    char *text = malloc(size + 1);
+    char *text = fuzz_text(data, size);
     if (!text)
         return 0;
-    memcpy(text, data, size);
-    text[size] = '\0';
 
     scene s;
     if (scene_parse_string(text, "fuzz.scene", "/nonexistent-fuzz-dir", &s)) {

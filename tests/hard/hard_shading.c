@@ -105,6 +105,12 @@ static bool load(const char *path, int lights, loaded *out)
     return hard_expect(ok, "load %s", path);
 }
 
+/* The start of a case on one scene: the w x h targets, then the scene at path with its own lights. */
+static bool setup_and_load(int width, int height, const char *path, loaded *out)
+{
+    return setup_create(width, height) && load(path, -1, out);
+}
+
 static bool parse(const char *text, loaded *out)
 {
     memset(out, 0, sizeof *out);
@@ -472,10 +478,8 @@ static error_stats compare_linear(const loaded *l, const float *cut, const float
 static int run_overlap(const char *path)
 {
     int w = 96, h = 72;
-    if (!setup_create(w, h))
-        return hard_finish();
     loaded l;
-    if (!load(path, -1, &l))
+    if (!setup_and_load(w, h, path, &l))
         return hard_finish();
     float *exact = malloc((size_t)w * h * 4 * sizeof *exact), *cut = malloc((size_t)w * h * 4 * sizeof *cut);
     render_linear(&l, 0.0, exact);
@@ -620,10 +624,8 @@ static int run_hdr(const char *path_a, const char *path_b)
 static int run_degenerate(const char *path)
 {
     int w = 128, h = 96;
-    if (!setup_create(w, h))
-        return hard_finish();
     loaded l;
-    if (!load(path, -1, &l))
+    if (!setup_and_load(w, h, path, &l))
         return hard_finish();
     image img[TESTED_COUNT];
     for (int r = 0; r < TESTED_COUNT; r++)

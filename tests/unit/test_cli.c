@@ -10,18 +10,15 @@
 
 #include "cli.h"
 #include "light.h"
-
-static const char *const renderers[] = {"deferred", "forward", NULL};
-static const char *const views[] = {"final", "albedo", "normal", NULL};
-static const char *const tonemaps[] = {"none", "reinhard", NULL};
+#include "test_util.h"
 
 static const cli_desc desc = {
     .program = "test",
     .summary = "test program",
-    .renderers = renderers,
-    .views = views,
-    .extras = {{.name = "tonemap", .metavar = "NAME", .help = "tone map", .choices = tonemaps,
-                .default_value = "none"},
+    .renderers = (const char *const[]){"deferred", "forward", NULL},
+    .views = (const char *const[]){"final", "albedo", "normal", NULL},
+    .extras = {{.name = "tonemap", .metavar = "NAME", .help = "tone map",
+                .choices = (const char *const[]){"none", "reinhard", NULL}, .default_value = "none"},
                {.name = "exposure", .metavar = "E", .help = "exposure", .default_value = "1"}},
     .default_cutoff = LIGHT_DEFAULT_CUTOFF,
 };
@@ -118,13 +115,5 @@ static void test_help(void **state)
     assert_int_equal(rc, CLI_PARSE_DONE);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_defaults),
-        cmocka_unit_test(test_every_option),
-        cmocka_unit_test(test_refused),
-        cmocka_unit_test(test_help),
-    };
-    return cmocka_run_group_tests(tests, NULL, NULL);
-}
+UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_defaults), cmocka_unit_test(test_every_option),
+               cmocka_unit_test(test_refused), cmocka_unit_test(test_help))

@@ -6,6 +6,7 @@
 #include <cmocka.h>
 
 #include "image.h"
+#include "test_util.h"
 
 #include <math.h>
 #include <signal.h>
@@ -21,26 +22,10 @@
 /* cmocka's float assertion works in single precision; these are doubles. */
 #define ASSERT_NEAR(got, want) assert_true(fabs((got) - (want)) <= EPS)
 
-static char tmp_dir[64];
-
 static int setup_dir(void **state)
 {
     (void)state;
-    strcpy(tmp_dir, "/tmp/test_image_XXXXXX");
-    return mkdtemp(tmp_dir) ? 0 : -1;
-}
-
-static int teardown_dir(void **state)
-{
-    (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp_dir);
-    return system(cmd) == 0 ? 0 : -1;
-}
-
-static void path_in_tmp(const char *name, char *out, size_t size)
-{
-    snprintf(out, size, "%s/%s", tmp_dir, name);
+    return tmp_dir_create("/tmp/test_image_XXXXXX");
 }
 
 static void set_pixel(image *img, int x, int y, int r, int g, int b, int a)
@@ -55,6 +40,21 @@ static void set_pixel(image *img, int x, int y, int r, int g, int b, int a)
 static const unsigned char *pixel_at(const image *img, int x, int y)
 {
     return img->pixels + 4 * ((size_t)y * (size_t)img->width + (size_t)x);
+}
+
+/* Two blank width x height pictures, as a test that fills and compares them starts. */
+static void create_pair(image *a, image *b, int width, int height)
+{
+    assert_true(image_create(a, width, height));
+    assert_true(image_create(b, width, height));
+}
+
+/* Frees the pictures a test made, up to three (NULL for fewer). */
+static void destroy_images(image *a, image *b, image *c)
+{
+    image_destroy(a);
+    image_destroy(b);
+    image_destroy(c);
 }
 
 /* Distinct values everywhere, including alpha, so a swapped channel or row cannot go unnoticed. */
@@ -105,8 +105,7 @@ static void test_create_rejects_bad_size(void **state)
 static void test_round_trip(void **state)
 {
     (void)state;
-    char path[128];
-    path_in_tmp("round.png", path, sizeof path);
+    const char *path = tmp_path("round.png");
     image src, back;
     assert_true(image_create(&src, 7, 5));
     fill_pattern(&src);
@@ -116,15 +115,13 @@ static void test_round_trip(void **state)
     assert_int_equal(back.height, 5);
     assert_memory_equal(back.pixels, src.pixels, 7 * 5 * 4);
     assert_int_equal(count_temp_files(), 0);
-    image_destroy(&src);
-    image_destroy(&back);
+    destroy_images(&src, &back, NULL);
 }
 
 static void test_write_replaces_old_file(void **state)
 {
     (void)state;
-    char path[128];
-    path_in_tmp("replace.png", path, sizeof path);
+    const char *path = tmp_path("replace.png");
     image first, second, back;
     assert_true(image_create(&first, 2, 2));
     assert_true(image_create(&second, 3, 1));
@@ -134,21 +131,18 @@ static void test_write_replaces_old_file(void **state)
     assert_true(image_load_png(path, &back));
     assert_int_equal(back.width, 3);
     assert_memory_equal(back.pixels, second.pixels, 3 * 1 * 4);
-    image_destroy(&first);
-    image_destroy(&second);
-    image_destroy(&back);
+    destroy_images(&first, &second, &back);
 }
 
 static void test_load_missing_or_garbage(void **state)
 {
     (void)state;
-    char path[128];
     image img;
-    path_in_tmp("missing.png", path, sizeof path);
+    const char *path = tmp_path("missing.png");
     assert_false(image_load_png(path, &img));
     assert_null(img.pixels);
 
-    path_in_tmp("garbage.png", path, sizeof path);
+    path = tmp_path("garbage.png");
     FILE *f = fopen(path, "wb");
     assert_non_null(f);
     fputs("not a png at all", f);
@@ -162,8 +156,8 @@ static void test_load_missing_or_garbage(void **state)
 static void test_write_fails_on_directory_target(void **state)
 {
     (void)state;
-    char dir[128], inside[160];
-    path_in_tmp("target_dir.png", dir, sizeof dir);
+    const char *dir = tmp_path("target_dir.png");
+    char inside[160];
     assert_int_equal(mkdir(dir, 0755), 0);
     snprintf(inside, sizeof inside, "%s/keep", dir);
     FILE *f = fopen(inside, "w");
@@ -184,8 +178,8 @@ static void test_write_fails_on_directory_target(void **state)
 static void test_write_fails_when_parent_is_file(void **state)
 {
     (void)state;
-    char parent[128], path[160];
-    path_in_tmp("plain_file", parent, sizeof parent);
+    const char *parent = tmp_path("plain_file");
+    char path[160];
     FILE *f = fopen(parent, "w");
     assert_non_null(f);
     fputs("x", f);
@@ -202,8 +196,7 @@ static void test_write_fails_when_parent_is_file(void **state)
 static void test_write_failure_keeps_old_file(void **state)
 {
     (void)state;
-    char path[128];
-    path_in_tmp("keep.png", path, sizeof path);
+    const char *path = tmp_path("keep.png");
     image small, noisy, back;
     assert_true(image_create(&small, 2, 2));
     fill_pattern(&small);
@@ -232,9 +225,7 @@ static void test_write_failure_keeps_old_file(void **state)
     assert_true(image_load_png(path, &back));
     assert_memory_equal(back.pixels, small.pixels, 2 * 2 * 4);
     assert_int_equal(count_temp_files(), 0);
-    image_destroy(&small);
-    image_destroy(&noisy);
-    image_destroy(&back);
+    destroy_images(&small, &noisy, &back);
 }
 
 static void test_flip_rows(void **state)
@@ -242,8 +233,7 @@ static void test_flip_rows(void **state)
     (void)state;
     image img, orig;
     for (int h = 1; h <= 4; ++h) { /* odd heights keep the middle row in place */
-        assert_true(image_create(&img, 3, h));
-        assert_true(image_create(&orig, 3, h));
+        create_pair(&img, &orig, 3, h);
         fill_pattern(&img);
         memcpy(orig.pixels, img.pixels, (size_t)3 * h * 4);
         image_flip_rows(&img);
@@ -251,26 +241,30 @@ static void test_flip_rows(void **state)
             assert_memory_equal(pixel_at(&img, 0, y), pixel_at(&orig, 0, h - 1 - y), 3 * 4);
         image_flip_rows(&img);
         assert_memory_equal(img.pixels, orig.pixels, (size_t)3 * h * 4);
-        image_destroy(&img);
-        image_destroy(&orig);
+        destroy_images(&img, &orig, NULL);
     }
+}
+
+/* The pixels image_compare compared, its largest channel difference and the first pixel that has it. */
+static void assert_largest_difference(const image_stats *s, long pixels, int max_abs, int x, int y)
+{
+    assert_int_equal(s->pixels, pixels);
+    assert_int_equal(s->max_abs, max_abs);
+    assert_int_equal(s->max_x, x);
+    assert_int_equal(s->max_y, y);
 }
 
 static void test_compare_identical(void **state)
 {
     (void)state;
     image a, b, heat;
-    assert_true(image_create(&a, 5, 4));
-    assert_true(image_create(&b, 5, 4));
+    create_pair(&a, &b, 5, 4);
     fill_pattern(&a);
     memcpy(b.pixels, a.pixels, 5 * 4 * 4);
     b.pixels[3] = 0; /* alpha is not compared */
     image_stats s;
     assert_true(image_compare(&a, &b, NULL, 0, &s, &heat));
-    assert_int_equal(s.pixels, 20);
-    assert_int_equal(s.max_abs, 0);
-    assert_int_equal(s.max_x, 0);
-    assert_int_equal(s.max_y, 0);
+    assert_largest_difference(&s, 20, 0, 0, 0);
     assert_true(s.mean_abs == 0.0);
     assert_true(s.rmse == 0.0);
     assert_true(isinf(s.psnr) && s.psnr > 0);
@@ -282,9 +276,7 @@ static void test_compare_identical(void **state)
         const unsigned char *p = heat.pixels + 4 * i;
         assert_true(p[0] == 0 && p[1] == 0 && p[2] == 0 && p[3] == 255);
     }
-    image_destroy(&a);
-    image_destroy(&b);
-    image_destroy(&heat);
+    destroy_images(&a, &b, &heat);
 }
 
 /* A 4x3 pair with three differing pixels, sums worked out by hand:
@@ -294,8 +286,7 @@ static void test_compare_identical(void **state)
  * Sum |d| = 17, sum d^2 = 4 + 25 + 25 + 25 = 79, over 12 pixels * 3 channels = 36 samples. */
 static void make_known_pair(image *a, image *b)
 {
-    assert_true(image_create(a, 4, 3));
-    assert_true(image_create(b, 4, 3));
+    create_pair(a, b, 4, 3);
     for (int y = 0; y < 3; ++y)
         for (int x = 0; x < 4; ++x) {
             set_pixel(a, x, y, 100 + x, 50 + y, 200, 255);
@@ -313,10 +304,7 @@ static void test_compare_known_differences(void **state)
     make_known_pair(&a, &b);
     image_stats s;
     assert_true(image_compare(&a, &b, NULL, 2, &s, &heat));
-    assert_int_equal(s.pixels, 12);
-    assert_int_equal(s.max_abs, 5);
-    assert_int_equal(s.max_x, 3);
-    assert_int_equal(s.max_y, 1);
+    assert_largest_difference(&s, 12, 5, 3, 1);
     ASSERT_NEAR(s.mean_abs, 17.0 / 36.0);
     ASSERT_NEAR(s.rmse, sqrt(79.0 / 36.0));
     ASSERT_NEAR(s.psnr, 20.0 * log10(255.0 / sqrt(79.0 / 36.0)));
@@ -334,16 +322,14 @@ static void test_compare_known_differences(void **state)
     assert_int_equal(s.over, 3);
     assert_true(image_compare(&a, &b, NULL, 5, &s, NULL));
     assert_int_equal(s.over, 0);
-    image_destroy(&a);
-    image_destroy(&b);
+    destroy_images(&a, &b, NULL);
 }
 
 static void test_heat_ramp(void **state)
 {
     (void)state;
     image a, b, heat;
-    assert_true(image_create(&a, 40, 1));
-    assert_true(image_create(&b, 40, 1));
+    create_pair(&a, &b, 40, 1);
     for (int x = 0; x < 40; ++x)
         set_pixel(&b, x, 0, 0, x, 0, 255);
     image_stats s;
@@ -359,9 +345,7 @@ static void test_heat_ramp(void **state)
     assert_true(pixel_at(&heat, 1, 0)[0] > pixel_at(&heat, 1, 0)[1]); /* diff 1 is red */
     assert_true(pixel_at(&heat, 32, 0)[1] > 200);                       /* diff 32 is yellow-white */
     assert_memory_equal(pixel_at(&heat, 32, 0), pixel_at(&heat, 39, 0), 4);
-    image_destroy(&a);
-    image_destroy(&b);
-    image_destroy(&heat);
+    destroy_images(&a, &b, &heat);
 }
 
 static void test_compare_with_mask(void **state)
@@ -376,10 +360,7 @@ static void test_compare_with_mask(void **state)
     mask.pixels[4 * (2 * 4 + 0) + 1] = 255; /* only red counts: (0,2) stays included */
     image_stats s;
     assert_true(image_compare(&a, &b, &mask, 2, &s, &heat));
-    assert_int_equal(s.pixels, 11);
-    assert_int_equal(s.max_abs, 5);
-    assert_int_equal(s.max_x, 0);
-    assert_int_equal(s.max_y, 2);
+    assert_largest_difference(&s, 11, 5, 0, 2);
     ASSERT_NEAR(s.mean_abs, 7.0 / 33.0);
     ASSERT_NEAR(s.rmse, sqrt(29.0 / 33.0));
     assert_int_equal(s.over, 1);
@@ -394,9 +375,7 @@ static void test_compare_with_mask(void **state)
     assert_int_equal(s.pixels, 9);
     assert_int_equal(s.max_abs, 0);
     assert_true(isinf(s.psnr));
-    image_destroy(&a);
-    image_destroy(&b);
-    image_destroy(&mask);
+    destroy_images(&a, &b, &mask);
 }
 
 static void test_compare_size_mismatch(void **state)
@@ -410,27 +389,15 @@ static void test_compare_size_mismatch(void **state)
     assert_null(heat.pixels);
     assert_true(image_create(&mask, 2, 2));
     assert_false(image_compare(&a, &a, &mask, 1, &s, NULL));
-    image_destroy(&a);
-    image_destroy(&b);
-    image_destroy(&mask);
+    destroy_images(&a, &b, &mask);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_create_rejects_bad_size),
-        cmocka_unit_test(test_round_trip),
-        cmocka_unit_test(test_write_replaces_old_file),
-        cmocka_unit_test(test_load_missing_or_garbage),
-        cmocka_unit_test(test_write_fails_on_directory_target),
-        cmocka_unit_test(test_write_fails_when_parent_is_file),
-        cmocka_unit_test(test_write_failure_keeps_old_file),
-        cmocka_unit_test(test_flip_rows),
-        cmocka_unit_test(test_compare_identical),
-        cmocka_unit_test(test_compare_known_differences),
-        cmocka_unit_test(test_heat_ramp),
-        cmocka_unit_test(test_compare_with_mask),
-        cmocka_unit_test(test_compare_size_mismatch),
-    };
-    return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
-}
+UNIT_TEST_MAIN(setup_dir, tmp_dir_remove, cmocka_unit_test(test_create_rejects_bad_size),
+               cmocka_unit_test(test_round_trip), cmocka_unit_test(test_write_replaces_old_file),
+               cmocka_unit_test(test_load_missing_or_garbage),
+               cmocka_unit_test(test_write_fails_on_directory_target),
+               cmocka_unit_test(test_write_fails_when_parent_is_file),
+               cmocka_unit_test(test_write_failure_keeps_old_file), cmocka_unit_test(test_flip_rows),
+               cmocka_unit_test(test_compare_identical), cmocka_unit_test(test_compare_known_differences),
+               cmocka_unit_test(test_heat_ramp), cmocka_unit_test(test_compare_with_mask),
+               cmocka_unit_test(test_compare_size_mismatch))

@@ -12,6 +12,7 @@
 
 #include "light.h"
 #include "scene.h"
+#include "test_util.h"
 
 /* Box expected for the test scene, worked out by hand from light.h's rule: object positions and
  * keys span x -3..6, y 0..5, z -4..2; widened by 10% of each side; y from 0.1 to top + 1. */
@@ -196,14 +197,6 @@ static void test_million_lights_empty_scene(void **state)
     free_lights(&s);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_bounds_follow_the_rule),
-        cmocka_unit_test(test_same_seed_same_lights),
-        cmocka_unit_test(test_zero_lights),
-        cmocka_unit_test(test_many_lights),
-        cmocka_unit_test(test_million_lights_empty_scene),
-    };
-    return cmocka_run_group_tests(tests, NULL, NULL);
-}
+UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_bounds_follow_the_rule),
+               cmocka_unit_test(test_same_seed_same_lights), cmocka_unit_test(test_zero_lights),
+               cmocka_unit_test(test_many_lights), cmocka_unit_test(test_million_lights_empty_scene))

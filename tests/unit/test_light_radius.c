@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include "light.h"
+#include "test_util.h"
 
 /* A few double roundings (frexp/ldexp are exact, then ~6 operations): 1e-12 is ~4500 ulps. */
 #define RADIUS_TOLERANCE 1e-12
@@ -275,18 +276,8 @@ static void test_attenuation_and_peak(void **state)
     assert_true(light_peak(blue, 0.5) == 1.5);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_attenuation_and_peak),
-        cmocka_unit_test(test_published_samples),
-        cmocka_unit_test(test_small_quadratic_term),
-        cmocka_unit_test(test_textbook_formula_cancels),
-        cmocka_unit_test(test_culled_and_unbounded),
-        cmocka_unit_test(test_extreme_magnitudes),
-        cmocka_unit_test(test_invalid_input_is_nan),
-        cmocka_unit_test(test_million_random_inputs),
-        cmocka_unit_test(test_radius_meets_cutoff),
-    };
-    return cmocka_run_group_tests(tests, NULL, NULL);
-}
+UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_attenuation_and_peak),
+               cmocka_unit_test(test_published_samples), cmocka_unit_test(test_small_quadratic_term),
+               cmocka_unit_test(test_textbook_formula_cancels), cmocka_unit_test(test_culled_and_unbounded),
+               cmocka_unit_test(test_extreme_magnitudes), cmocka_unit_test(test_invalid_input_is_nan),
+               cmocka_unit_test(test_million_random_inputs), cmocka_unit_test(test_radius_meets_cutoff))

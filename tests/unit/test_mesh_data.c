@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "mesh_data.h"
+#include "test_util.h"
 
 static const float *vertex(const mesh_data *m, uint32_t i) { return m->vertices + (size_t)i * MESH_VERTEX_FLOATS; }
 
@@ -160,13 +161,7 @@ static void test_load_model_normals(void **state)
     rmdir(dir);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_cube),           cmocka_unit_test(test_plane),
-        cmocka_unit_test(test_sphere),         cmocka_unit_test(test_icosphere),
-        cmocka_unit_test(test_inradius_of_cube), cmocka_unit_test(test_load_missing_model),
-        cmocka_unit_test(test_load_model_normals),
-    };
-    return cmocka_run_group_tests(tests, NULL, NULL);
-}
+UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_cube), cmocka_unit_test(test_plane),
+               cmocka_unit_test(test_sphere), cmocka_unit_test(test_icosphere),
+               cmocka_unit_test(test_inradius_of_cube), cmocka_unit_test(test_load_missing_model),
+               cmocka_unit_test(test_load_model_normals))

@@ -13,6 +13,8 @@
 
 #include <cmocka.h>
 
+#include "test_util.h"
+
 /* The bound the course promises for the RGBA16F target (lighting must agree to 1/255). */
 #define MAX_ERROR_DEG 0.05
 /* Without storage the round trip is float arithmetic only. */
@@ -231,13 +233,5 @@ static void test_special_points(void **unused)
     assert_true(r[1] == -1.0f && fabsf(r[0]) < 1e-7f && fabsf(r[2]) < 1e-7f);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_half_round),
-        cmocka_unit_test(test_special_points),
-        cmocka_unit_test(test_round_trip_exact),
-        cmocka_unit_test(test_round_trip_half),
-    };
-    return cmocka_run_group_tests(tests, NULL, NULL);
-}
+UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_half_round), cmocka_unit_test(test_special_points),
+               cmocka_unit_test(test_round_trip_exact), cmocka_unit_test(test_round_trip_half))

@@ -7,6 +7,7 @@
 #include <cmocka.h>
 
 #include "scene.h"
+#include "test_util.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,21 +20,10 @@
 /* Parsed floats are the nearest float to the decimal text; interpolation adds a few ulps. */
 #define EPS 1e-5f
 
-static char tmp_dir[64];
-
 static int setup_dir(void **state)
 {
     (void)state;
-    strcpy(tmp_dir, "/tmp/test_scene_XXXXXX");
-    return mkdtemp(tmp_dir) ? 0 : -1;
-}
-
-static int teardown_dir(void **state)
-{
-    (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp_dir);
-    return system(cmd) == 0 ? 0 : -1;
+    return tmp_dir_create("/tmp/test_scene_XXXXXX");
 }
 
 static void write_file(const char *path, const char *bytes, size_t size)
@@ -127,6 +117,17 @@ static void check_error(const char *text, const char *want)
 
 /* ---- defaults and directives ------------------------------------------------------------------ */
 
+/* Every field of a parsed material. */
+static void assert_material(const scene_material *m, const char *name, const float albedo[3], float specular,
+                            float shininess)
+{
+    assert_string_equal(m->name, name);
+    for (int i = 0; i < 3; i++)
+        assert_float_equal(m->albedo[i], albedo[i], EPS);
+    assert_float_equal(m->specular, specular, EPS);
+    assert_float_equal(m->shininess, shininess, EPS);
+}
+
 static void test_defaults(void **state)
 {
     (void)state;
@@ -152,9 +153,7 @@ static void test_defaults(void **state)
     assert_int_equal(s.meshes[0].line, 1);
 
     assert_int_equal(s.material_count, 1);
-    assert_float_equal(s.materials[0].albedo[1], 0.25f, EPS);
-    assert_float_equal(s.materials[0].specular, 0.0f, EPS);
-    assert_float_equal(s.materials[0].shininess, 32.0f, EPS);
+    assert_material(&s.materials[0], "m", (const float[3]){0.5f, 0.25f, 1.0f}, 0.0f, 32.0f);
 
     assert_int_equal(s.object_count, 1);
     const scene_object *o = &s.objects[0];
@@ -217,13 +216,8 @@ static void test_every_attribute(void **state)
     assert_float_equal(s.ambient[2], 0.3f, EPS);
 
     assert_int_equal(s.material_count, 2);
-    assert_string_equal(s.materials[0].name, "red");
-    assert_float_equal(s.materials[0].albedo[0], 0.9f, EPS);
-    assert_float_equal(s.materials[0].albedo[2], 0.05f, EPS);
-    assert_float_equal(s.materials[0].specular, 0.5f, EPS);
-    assert_float_equal(s.materials[0].shininess, 64.0f, EPS);
-    assert_float_equal(s.materials[1].specular, 0.25f, EPS);
-    assert_float_equal(s.materials[1].shininess, 8.0f, EPS);
+    assert_material(&s.materials[0], "red", (const float[3]){0.9f, 0.1f, 0.05f}, 0.5f, 64.0f);
+    assert_material(&s.materials[1], "blue", (const float[3]){0.0f, 0.0f, 1.0f}, 0.25f, 8.0f);
 
     assert_int_equal(s.mesh_count, 4);
     assert_int_equal(s.meshes[0].kind, SCENE_MESH_PLANE);
@@ -647,20 +641,9 @@ static void test_large_scene(void **state)
     free(text);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_defaults),
-        cmocka_unit_test(test_every_attribute),
-        cmocka_unit_test(test_comments_and_layout),
-        cmocka_unit_test(test_keys),
-        cmocka_unit_test(test_world_matrix),
-        cmocka_unit_test(test_add_light),
-        cmocka_unit_test(test_errors),
-        cmocka_unit_test(test_error_long_line),
-        cmocka_unit_test(test_error_from_file),
-        cmocka_unit_test(test_model_paths),
-        cmocka_unit_test(test_large_scene),
-    };
-    return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
-}
+UNIT_TEST_MAIN(setup_dir, tmp_dir_remove, cmocka_unit_test(test_defaults),
+               cmocka_unit_test(test_every_attribute), cmocka_unit_test(test_comments_and_layout),
+               cmocka_unit_test(test_keys), cmocka_unit_test(test_world_matrix),
+               cmocka_unit_test(test_add_light), cmocka_unit_test(test_errors),
+               cmocka_unit_test(test_error_long_line), cmocka_unit_test(test_error_from_file),
+               cmocka_unit_test(test_model_paths), cmocka_unit_test(test_large_scene))

@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "mesh_data.h"
+#include "test_util.h"
 
 #define RENDERER_SUBDIVISIONS 1 /* the mesh common/light_volumes.c uses */
 #define SAMPLE_DIRECTIONS 100000
@@ -29,6 +30,7 @@ typedef struct face_plane {
 } face_plane;
 
 typedef struct volume {
+    int subdivisions;
     mesh_data mesh;
     face_plane *planes;
     int face_count;
@@ -43,6 +45,7 @@ static const float *vertex_at(const mesh_data *m, int index)
  * faces seen from outside, cross(b - a, c - a) points outward. */
 static void volume_make(int subdivisions, volume *v)
 {
+    v->subdivisions = subdivisions;
     assert_true(mesh_data_icosphere(&v->mesh, subdivisions));
     v->face_count = v->mesh.index_count / 3;
     assert_int_equal(v->face_count, 20 << (2 * subdivisions));
@@ -126,59 +129,70 @@ static double sphere_excess(const volume *v, double scale)
     return worst;
 }
 
-static void test_scaled_mesh_contains_sphere(void **state)
+/* Runs check on the mesh of every subdivision level from 0 to 3: the renderer's and its neighbours. */
+static void for_each_level(void (*check)(const volume *v))
 {
-    (void)state;
     for (int s = 0; s <= 3; s++) {
         volume v;
         volume_make(s, &v);
-        double inradius = mesh_data_inradius(&v.mesh);
-        assert_true(inradius > 0.5 && inradius < 1.0);
-        double excess = sphere_excess(&v, 1.0 / inradius);
-        print_message("subdivisions %d: %d faces, inradius %.6f, scale %.6f, worst excess %.3g\n", s,
-                      v.face_count, inradius, 1.0 / inradius, excess);
-        assert_true(excess <= INSIDE_EPSILON);
-        /* Tight: the face that sets the inradius touches the sphere (excess ~ 0, not far below). */
-        assert_true(excess > -1e-6);
+        check(&v);
         volume_destroy(&v);
     }
+}
+
+static void check_contains_sphere(const volume *v)
+{
+    double inradius = mesh_data_inradius(&v->mesh);
+    assert_true(inradius > 0.5 && inradius < 1.0);
+    double excess = sphere_excess(v, 1.0 / inradius);
+    print_message("subdivisions %d: %d faces, inradius %.6f, scale %.6f, worst excess %.3g\n",
+                  v->subdivisions, v->face_count, inradius, 1.0 / inradius, excess);
+    assert_true(excess <= INSIDE_EPSILON);
+    /* Tight: the face that sets the inradius touches the sphere (excess ~ 0, not far below). */
+    assert_true(excess > -1e-6);
+}
+
+static void test_scaled_mesh_contains_sphere(void **state)
+{
+    (void)state;
+    for_each_level(check_contains_sphere);
 }
 
 /* Without the scale the sphere pokes out through the middle of every face: the bug the scale fixes.
  * Even 0.1 % short of the factor is not enough. */
+static void check_misses_sphere_unscaled(const volume *v)
+{
+    for (int f = 0; f < v->face_count; f++) {
+        double centre[3] = {v->planes[f].centre[0], v->planes[f].centre[1], v->planes[f].centre[2]};
+        normalize3(centre);
+        assert_true(volume_excess(v, 1.0, centre) > 1e-4);
+    }
+    double inradius = mesh_data_inradius(&v->mesh);
+    assert_true(sphere_excess(v, 1.0) > 1.0 - inradius - 1e-9);
+    assert_true(sphere_excess(v, 0.999 / inradius) > 0.0);
+}
+
 static void test_unscaled_mesh_misses_sphere(void **state)
 {
     (void)state;
-    for (int s = 0; s <= 3; s++) {
-        volume v;
-        volume_make(s, &v);
-        for (int f = 0; f < v.face_count; f++) {
-            double centre[3] = {v.planes[f].centre[0], v.planes[f].centre[1], v.planes[f].centre[2]};
-            normalize3(centre);
-            assert_true(volume_excess(&v, 1.0, centre) > 1e-4);
-        }
-        double inradius = mesh_data_inradius(&v.mesh);
-        assert_true(sphere_excess(&v, 1.0) > 1.0 - inradius - 1e-9);
-        assert_true(sphere_excess(&v, 0.999 / inradius) > 0.0);
-        volume_destroy(&v);
-    }
+    for_each_level(check_misses_sphere_unscaled);
 }
 
 /* Face culling picks front or back faces by winding: every face must be counter-clockwise seen
  * from outside, i.e. its winding normal points away from the centre, for all levels. */
+static void check_faces_wind_outward(const volume *v)
+{
+    for (int f = 0; f < v->face_count; f++) {
+        const face_plane *p = &v->planes[f];
+        double outward = p->n[0] * p->centre[0] + p->n[1] * p->centre[1] + p->n[2] * p->centre[2];
+        assert_true(outward > 0.5);
+    }
+}
+
 static void test_faces_wind_outward(void **state)
 {
     (void)state;
-    for (int s = 0; s <= 3; s++) {
-        volume v;
-        volume_make(s, &v);
-        for (int f = 0; f < v.face_count; f++) {
-            const face_plane *p = &v.planes[f];
-            double outward = p->n[0] * p->centre[0] + p->n[1] * p->centre[1] + p->n[2] * p->centre[2];
-            assert_true(outward > 0.5);
-        }
-        volume_destroy(&v);
-    }
+    for_each_level(check_faces_wind_outward);
 }
 
 /* The renderer's mesh is the 80-triangle one (the fastest measured on llvmpipe): its scale. */
@@ -194,13 +208,6 @@ static void test_renderer_mesh(void **state)
     mesh_data_destroy(&m);
 }
 
-int main(void)
-{
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_renderer_mesh),
-        cmocka_unit_test(test_faces_wind_outward),
-        cmocka_unit_test(test_scaled_mesh_contains_sphere),
-        cmocka_unit_test(test_unscaled_mesh_misses_sphere),
-    };
-    return cmocka_run_group_tests(tests, NULL, NULL);
-}
+UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_renderer_mesh), cmocka_unit_test(test_faces_wind_outward),
+               cmocka_unit_test(test_scaled_mesh_contains_sphere),
+               cmocka_unit_test(test_unscaled_mesh_misses_sphere))

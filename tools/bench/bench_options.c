@@ -1,4 +1,5 @@
 /* bench_options.c - see bench_options.h. */
+#include "data_dir.h"
 #include "bench_options.h"
 
 #include "bench_renderers.h"
@@ -39,7 +40,8 @@ void bench_options_print_help(FILE *f)
         "                        every pixel with every light (default 256; the cut-off\n"
         "                        sweep always measures it)\n"
         "  --seed N              light_generate seed (default 1)\n"
-        "  --scene-dir DIR       where scene names are looked up (default assets/scenes)\n"
+        "  --scene-dir DIR       where scene names are looked up (default: the data folder's\n"
+        "                        assets/scenes)\n"
         "  --out DIR             output folder (default out)\n"
         "  --backend egl|osmesa  headless GL (default egl)\n"
         "  --no-plots            skip gnuplot\n"
@@ -104,41 +106,59 @@ static bool split_list(const char *list, char items[MAX_LIST][NAME_MAX_LEN], int
     }
 }
 
-static bool set_lights(bench_options *o, const char *list)
+/* Reads one item of a list option into slot i of its array; false when the item is bad. */
+typedef bool (*item_reader)(bench_options *o, int i, const char *item);
+
+/* Splits list into *count items and reads each with read_item; the usage error names the list
+ * (bad_list) or the first item read_item refused (bad_item). */
+static bool set_list(bench_options *o, const char *list, int *count, item_reader read_item,
+                     const char *bad_list, const char *bad_item)
 {
     char items[MAX_LIST][NAME_MAX_LEN];
-    if (!split_list(list, items, &o->light_list_count))
-        return usage_error("bad --lights list", list);
-    for (int i = 0; i < o->light_list_count; i++)
-        if (strcmp(items[i], "scene") == 0)
-            o->lights[i] = LIGHTS_OWN;
-        else if (!parse_int(items[i], 0, 1 << 20, &o->lights[i]))
-            return usage_error("bad light count in --lights", items[i]);
+    if (!split_list(list, items, count))
+        return usage_error(bad_list, list);
+    for (int i = 0; i < *count; i++)
+        if (!read_item(o, i, items[i]))
+            return usage_error(bad_item, items[i]);
     return true;
+}
+
+static bool read_light_count(bench_options *o, int i, const char *item)
+{
+    if (strcmp(item, "scene") == 0) {
+        o->lights[i] = LIGHTS_OWN;
+        return true;
+    }
+    return parse_int(item, 0, 1 << 20, &o->lights[i]);
+}
+
+static bool read_renderer(bench_options *o, int i, const char *item)
+{
+    o->renderers[i] = bench_renderer_find(item);
+    return o->renderers[i] >= 0;
+}
+
+static bool read_cutoff(bench_options *o, int i, const char *item)
+{
+    return parse_double(item, 1e-6, 255.0, &o->cutoffs[i]);
+}
+
+static bool set_lights(bench_options *o, const char *list)
+{
+    return set_list(o, list, &o->light_list_count, read_light_count, "bad --lights list",
+                    "bad light count in --lights");
 }
 
 static bool set_renderers(bench_options *o, const char *list)
 {
-    char items[MAX_LIST][NAME_MAX_LEN];
-    if (!split_list(list, items, &o->renderer_count))
-        return usage_error("bad --renderers list", list);
-    for (int i = 0; i < o->renderer_count; i++) {
-        o->renderers[i] = bench_renderer_find(items[i]);
-        if (o->renderers[i] < 0)
-            return usage_error("unknown renderer in --renderers", items[i]);
-    }
-    return true;
+    return set_list(o, list, &o->renderer_count, read_renderer, "bad --renderers list",
+                    "unknown renderer in --renderers");
 }
 
 static bool set_cutoffs(bench_options *o, const char *list)
 {
-    char items[MAX_LIST][NAME_MAX_LEN];
-    if (!split_list(list, items, &o->cutoff_count))
-        return usage_error("bad --cutoffs list", list);
-    for (int i = 0; i < o->cutoff_count; i++)
-        if (!parse_double(items[i], 1e-6, 255.0, &o->cutoffs[i]))
-            return usage_error("bad cut-off in --cutoffs (1/256 units, > 0)", items[i]);
-    return true;
+    return set_list(o, list, &o->cutoff_count, read_cutoff, "bad --cutoffs list",
+                    "bad cut-off in --cutoffs (1/256 units, > 0)");
 }
 
 static bool set_scenes(bench_options *o, const char *list)
@@ -162,7 +182,9 @@ static void set_defaults(bench_options *o)
     o->max_frame_ms = 1500, o->case_budget_ms = 1500;
     o->error_max_lights = 256;
     o->seed = 1;
-    o->scene_dir = "assets/scenes";
+    /* The course's scenes wherever the benchmark runs from (common/data_dir.h). */
+    static char scene_dir[4200];
+    o->scene_dir = data_dir_path("assets/scenes", scene_dir, sizeof scene_dir) ? scene_dir : "assets/scenes";
     o->out_dir = "out";
     o->plots = true;
     o->backend = BACKEND_EGL;

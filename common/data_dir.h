@@ -1,0 +1,21 @@
+/* data_dir.h - where the course's shaders and assets are, wherever a program runs from.
+ *
+ *   data_dir_set(dir)                    --data-dir: this folder (it holds shaders/ and assets/)
+ *   data_dir()                           the folder: --data-dir, else $COURSE_DATA_DIR, else
+ *                                        share/deferred_course of an installed prefix (beside the
+ *                                        executable's bin/), else the source tree it was built from
+ *   data_dir_path(relative, out, size)   data_dir()/relative; false when it does not fit
+ *   data_dir_origin()                    which of the four gave data_dir(), for messages
+ */
+#ifndef COMMON_DATA_DIR_H
+#define COMMON_DATA_DIR_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+void data_dir_set(const char *dir);
+const char *data_dir(void);
+bool data_dir_path(const char *relative, char *out, size_t size);
+const char *data_dir_origin(void);
+
+#endif
