@@ -94,6 +94,7 @@ static bool frame(app *a)
         return false;
 
     /* 2. present: bind the colour texture and cover the target with one triangle */
+    frame_timer_mark("present");
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
     glDisable(GL_DEPTH_TEST);

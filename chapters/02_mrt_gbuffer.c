@@ -69,6 +69,7 @@ static bool resize(app *a)
 /* Draws one target of the G-buffer as a picture, with a full-screen triangle. */
 static bool draw_view(const app *a)
 {
+    frame_timer_mark("view");
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
     glDisable(GL_DEPTH_TEST);

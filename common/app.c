@@ -122,15 +122,28 @@ static bool save_screenshot(const app *a, const char *path)
     return ok;
 }
 
-static void update_title(const app *a, double ms)
+/* "geometry 3.10, lighting 8.20" from frame times summed over n frames. */
+static void format_passes(const frame_times *sum, int n, char *out, size_t size)
 {
-    char title[512];
-    snprintf(title, sizeof title, "%s | %s%s%s | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps) | cut-off %.4g%s",
+    out[0] = '\0';
+    for (int k = 0, used = 0; k < sum->count && used >= 0 && (size_t)used < size; k++)
+        used += snprintf(out + used, size - (size_t)used, "%s%s %.2f", k ? ", " : "", sum->names[k], sum->ms[k] / n);
+}
+
+/* The title shows the frame time the timer measured (never CPU submission time alone), its passes
+ * and the clock; --verbose logs it too. */
+static void update_title(const app *a, const frame_times *sum, int n)
+{
+    char title[640], passes[320];
+    double ms = sum->frame_ms / n;
+    format_passes(sum, n, passes, sizeof passes);
+    snprintf(title, sizeof title, "%s | %s%s%s | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps; %s) [%s] | cut-off %.4g%s",
              a->cli->program, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward",
              a->cli->views ? " | view " : "", a->cli->views ? a->cli->views[a->view] : "", a->scene.light_count,
-             a->gs.culled_count, a->width, a->height, ms, ms > 0 ? 1000.0 / ms : 0.0, a->cutoff,
-             a->cutoff == 0 ? " (exact)" : "");
+             a->gs.culled_count, a->width, a->height, ms, ms > 0 ? 1000.0 / ms : 0.0, passes,
+             frame_timer_clock(&a->timer), a->cutoff, a->cutoff == 0 ? " (exact)" : "");
     platform_set_title(title);
+    log_debug("window: %s", title);
 }
 
 static void next_choice(const char *const *choices, int *index, const char *what)
@@ -172,11 +185,13 @@ typedef struct loop {
     const app_desc *desc;
     const cli_options *opt;
     app_hooks hooks;
-    double *times; /* --bench: one per timed frame */
-    long total;    /* frames to draw; 0: until the window closes */
+    double *times;   /* --bench: one per timed frame */
+    double *pass_ms; /* --bench: FRAME_TIMER_MAX_PASSES per timed frame */
+    long total;      /* frames to draw; 0: until the window closes */
     bool paused;
-    double last_clock, title_clock, ms_sum;
-    int ms_n;
+    double last_clock, title_clock;
+    frame_times title_sum; /* the timer's frames since the title was last updated */
+    int title_n;
 } loop;
 
 /* Size changes (window, or a resize-cycle hook) recreate the targets. */
@@ -193,6 +208,35 @@ static bool follow_size(app *a, loop *l)
     return check_size_limits(w, h) && make_target(a) && (!l->desc->resize || l->desc->resize(a));
 }
 
+/* --bench: the frame's wall time and the timer's passes (one frame late with GPU queries). */
+static void record_bench(const app *a, loop *l, double ms)
+{
+    long i = a->frame_index - l->opt->warmup;
+    if (i < 0)
+        return;
+    l->times[i] = ms;
+    for (int k = 0; k < FRAME_TIMER_MAX_PASSES; k++)
+        l->pass_ms[i * FRAME_TIMER_MAX_PASSES + k] = k < a->timer.last.count ? a->timer.last.ms[k] : 0.0;
+}
+
+/* The window's figure: the timer's frames, averaged over half a second. */
+static void record_title(const app *a, loop *l, double now)
+{
+    const frame_times *f = &a->timer.last;
+    if (f->valid) {
+        if (l->title_n == 0 || l->title_sum.count != f->count)
+            l->title_sum = (frame_times){.count = f->count}, l->title_n = 0;
+        for (int k = 0; k < f->count; k++)
+            l->title_sum.names[k] = f->names[k], l->title_sum.ms[k] += f->ms[k];
+        l->title_sum.frame_ms += f->frame_ms;
+        l->title_n++;
+    }
+    if (now - l->title_clock > 0.5 && l->title_n > 0) {
+        update_title(a, &l->title_sum, l->title_n);
+        l->title_clock = now, l->title_n = 0;
+    }
+}
+
 /* One frame: update, draw, time; false stops the loop with *rc set when it failed. */
 static bool draw_frame(app *a, loop *l, int *rc)
 {
@@ -202,23 +246,20 @@ static bool draw_frame(app *a, loop *l, int *rc)
     l->last_clock = now;
     app_hooks_after_frame(&l->hooks, platform_is_minimised());
     double t0 = platform_time();
-    if (!gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) || !l->desc->frame(a) ||
-        (!gl_check("frame") && l->opt->gl_debug)) {
+    frame_timer_begin(&a->timer);
+    frame_timer_mark("scene update");
+    bool ok = gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) && l->desc->frame(a);
+    frame_timer_end(&a->timer);
+    if (!ok || (!gl_check("frame") && l->opt->gl_debug)) {
         *rc = EXIT_CODE_RUNTIME;
         return false;
     }
-    if (l->opt->bench)
-        glFinish();
-    double ms = (platform_time() - t0) * 1000.0;
-    if (l->opt->bench && a->frame_index >= l->opt->warmup)
-        l->times[a->frame_index - l->opt->warmup] = ms;
-    if (platform_is_windowed()) {
-        l->ms_sum += ms, l->ms_n++;
-        if (now - l->title_clock > 0.5) {
-            update_title(a, l->ms_sum / l->ms_n);
-            l->title_clock = now, l->ms_sum = 0.0, l->ms_n = 0;
-        }
+    if (l->opt->bench) {
+        glFinish(); /* the frame's wall time, whatever the pass clock */
+        record_bench(a, l, (platform_time() - t0) * 1000.0);
     }
+    if (platform_is_windowed())
+        record_title(a, l, now);
     return true;
 }
 
@@ -284,6 +325,8 @@ static int app_setup(app *a, const app_desc *desc)
         return EXIT_CODE_USAGE; /* a model file that cannot be loaded is an input error */
     renderers_create(&a->renderers);
     a->query = gl_query_create();
+    if (!frame_timer_create(&a->timer))
+        return EXIT_CODE_RUNTIME;
     return make_target(a) && (!desc->init || desc->init(a)) ? EXIT_CODE_OK : EXIT_CODE_RUNTIME;
 }
 
@@ -293,6 +336,7 @@ static void app_close(app *a, const app_desc *desc)
         desc->cleanup(a);
     fbo_destroy(&a->target);
     gl_query_destroy(&a->query);
+    frame_timer_destroy(&a->timer);
     renderers_destroy(&a->renderers);
     gpu_scene_destroy(&a->gs);
     gl_util_shutdown();
@@ -309,7 +353,7 @@ static int app_finish(app *a, loop *l, int rc)
     if (rc == EXIT_CODE_OK)
         rc = app_hooks_check(&l->hooks, a, opt);
     if (rc == EXIT_CODE_OK && opt->bench && a->frame_index == l->total)
-        app_bench_print(a, l->times, opt->frames);
+        app_bench_print(a, l->times, l->pass_ms, opt->frames);
     if (rc == EXIT_CODE_OK && opt->screenshot && l->total == 0 && !save_screenshot(a, opt->screenshot))
         rc = EXIT_CODE_RUNTIME; /* window closed by the user: keep the last frame */
     if (opt->gl_debug && gl_debug_error_count() > 0) {
@@ -360,7 +404,9 @@ int app_run(const app_desc *desc, int argc, char **argv)
     loop l = {.desc = desc, .opt = &opt, .paused = opt.paused, .last_clock = platform_time()};
     app_hooks_init(&l.hooks, &opt);
     rc = app_setup(&a, desc);
-    if (rc == EXIT_CODE_OK && opt.bench && !(l.times = malloc((size_t)opt.frames * sizeof *l.times))) {
+    if (rc == EXIT_CODE_OK && opt.bench &&
+        (!(l.times = malloc((size_t)opt.frames * sizeof *l.times)) ||
+         !(l.pass_ms = calloc((size_t)opt.frames * FRAME_TIMER_MAX_PASSES, sizeof *l.pass_ms)))) {
         log_error("out of memory for %d frame times", opt.frames);
         rc = EXIT_CODE_RUNTIME;
     }
@@ -371,5 +417,6 @@ int app_run(const app_desc *desc, int argc, char **argv)
         rc = app_finish(&a, &l, run_loop(&a, &l));
     app_close(&a, desc);
     free(l.times);
+    free(l.pass_ms);
     return rc;
 }

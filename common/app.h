@@ -21,6 +21,7 @@
 
 #include "cli.h"
 #include "fbo.h"
+#include "frame_timer.h"
 #include "gpu_scene.h"
 #include "renderers.h"
 #include "scene.h"
@@ -39,6 +40,7 @@ typedef struct app {
     double cutoff;
     long frame_index;
     GLuint query;       /* a GL_SAMPLES_PASSED query for the chapter's lighting pass */
+    frame_timer timer;  /* the frame and its passes, on an honest clock (frame_timer.h) */
     long shaded_pixels; /* what the chapter counted with it in the last frame; -1 if not */
     char default_scene[4200]; /* the data folder's default scene, when no --scene was given */
 } app;

@@ -111,7 +111,22 @@ static void print_scene_name(const char *path)
     print_token(name);
 }
 
-void app_bench_print(const app *a, double *ms, int n)
+/* " geometry_ms=3.100 lighting_ms=8.200 ... pass_clock=gpu-timer": each pass's median. */
+static void print_passes(const app *a, const double *pass_ms, int n)
+{
+    double *column = malloc((size_t)n * sizeof *column);
+    for (int k = 0; column && k < a->timer.last.count; k++) {
+        for (int i = 0; i < n; i++)
+            column[i] = pass_ms[i * FRAME_TIMER_MAX_PASSES + k];
+        putchar(' ');
+        print_token(a->timer.last.names[k]);
+        printf("_ms=%.3f", frame_stats_of(column, n).median);
+    }
+    free(column);
+    printf(" pass_clock=%s", frame_timer_clock(&a->timer));
+}
+
+void app_bench_print(const app *a, double *ms, double *pass_ms, int n)
 {
     const frame_stats st = frame_stats_of(ms, n);
     printf("bench: chapter=%s renderer=%s scene=", a->cli->program,
@@ -124,6 +139,7 @@ void app_bench_print(const app *a, double *ms, int n)
            a->options->warmup, st.median, st.min, st.max, st.mean, st.median > 0 ? 1000.0 / st.median : 0.0, a->cutoff,
            a->shaded_pixels, platform_backend_name());
     print_token((const char *)glGetString(GL_RENDERER));
+    print_passes(a, pass_ms, n);
     printf("\n");
     fflush(stdout);
 }

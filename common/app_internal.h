@@ -7,7 +7,9 @@
  *   app_hooks_after_frame(h, minimised)        counts frames drawn while minimised
  *   app_hooks_check(h, a, opt)                 the hooks' verdict after the loop: leaked GL
  *                                              objects, frames drawn while minimised; exit code
- *   app_bench_print(a, ms, n)                  the one `bench: key=value ...` line of --bench
+ *   app_bench_print(a, ms, pass_ms, n)         the one `bench: key=value ...` line of --bench: the
+ *                                              frames' wall times (glFinish + monotonic) and the
+ *                                              median of each pass on the timer's clock
  */
 #ifndef COMMON_APP_INTERNAL_H
 #define COMMON_APP_INTERNAL_H
@@ -28,6 +30,6 @@ bool app_hooks_minimise(app_hooks *h, const app *a, const cli_options *opt);
 void app_hooks_resize(app_hooks *h, const app *a, const cli_options *opt, int *width, int *height);
 void app_hooks_after_frame(app_hooks *h, bool minimised);
 int app_hooks_check(const app_hooks *h, const app *a, const cli_options *opt);
-void app_bench_print(const app *a, double *ms, int n);
+void app_bench_print(const app *a, double *ms, double *pass_ms, int n);
 
 #endif

@@ -1,6 +1,7 @@
 /* deferred_fullscreen.c - see deferred_fullscreen.h. */
 #include "deferred_fullscreen.h"
 
+#include "frame_timer.h"
 #include "gl_util.h"
 
 #include <string.h>
@@ -26,6 +27,7 @@ void deferred_fullscreen_destroy(deferred_fullscreen *d)
 bool deferred_fullscreen_render(deferred_fullscreen *d, const gbuffer *g, const gpu_scene *gs, GLuint target,
                                 deferred_fullscreen_options options)
 {
+    frame_timer_mark("lighting");
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, g->fbo.width, g->fbo.height);
     gl_pass_state_reset();

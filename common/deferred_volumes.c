@@ -1,6 +1,7 @@
 /* deferred_volumes.c - see deferred_volumes.h. */
 #include "deferred_volumes.h"
 
+#include "frame_timer.h"
 #include "log.h"
 
 #include <string.h>
@@ -62,6 +63,7 @@ bool deferred_volumes_resize(deferred_volumes *dv, const gbuffer *g)
 
 static void present(const deferred_volumes *dv, GLuint target, const deferred_volumes_frame *f)
 {
+    frame_timer_mark("present");
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, dv->accum.width, dv->accum.height);
     glUseProgram(dv->present_program);
@@ -81,6 +83,7 @@ bool deferred_volumes_render(deferred_volumes *dv, const gbuffer *g, const gpu_s
     if (!follow_gbuffer(dv, g, f->accum_format ? f->accum_format : dv->accum_format) ||
         !light_volumes_sort(&dv->lv, gs))
         return false;
+    frame_timer_mark("lighting");
     glBindFramebuffer(GL_FRAMEBUFFER, dv->accum.id);
     glViewport(0, 0, dv->accum.width, dv->accum.height);
     gl_pass_state_reset();

@@ -1,6 +1,7 @@
 /* forward.c - see forward.h. */
 #include "forward.h"
 
+#include "frame_timer.h"
 #include "gl_util.h"
 #include "log.h"
 
@@ -56,6 +57,7 @@ static bool list_reserve(forward *f, size_t n)
  * Layout: (first, count) for each object, then the indices; forward.frag reads it the same way. */
 bool forward_build_light_lists(forward *f, const gpu_scene *gs)
 {
+    frame_timer_mark("light lists");
     int objects = gs->src->object_count;
     size_t n = 2 * (size_t)objects;
     if (!list_reserve(f, n + 1))
@@ -82,6 +84,7 @@ bool forward_build_light_lists(forward *f, const gpu_scene *gs)
 
 void forward_draw_depth(const forward *f, const gpu_scene *gs)
 {
+    frame_timer_mark("depth pre-pass");
     glUseProgram(f->depth_program);
     gpu_scene_bind_objects(gs, f->depth_program, SHADER_UNIT_OBJECTS);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -102,6 +105,7 @@ bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options option
     GLuint program = shading_program(f, options.linear_output);
     if (!program)
         return false;
+    frame_timer_mark("shading");
     glUseProgram(program);
     gpu_scene_bind_lights(gs, program, SHADER_UNIT_LIGHTS);
     gpu_scene_bind_objects(gs, program, SHADER_UNIT_OBJECTS);

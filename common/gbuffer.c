@@ -1,6 +1,7 @@
 /* gbuffer.c - see gbuffer.h. */
 #include "gbuffer.h"
 
+#include "frame_timer.h"
 #include "gl_util.h"
 #include "log.h"
 
@@ -49,6 +50,7 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
                   gs->view.width, gs->view.height);
         return false;
     }
+    frame_timer_mark("geometry");
     glBindFramebuffer(GL_FRAMEBUFFER, g->fbo.id);
     glViewport(0, 0, g->fbo.width, g->fbo.height);
     /* Zero normal/material and depth 1 mark the background; the lighting pass tests depth. */

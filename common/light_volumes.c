@@ -1,6 +1,7 @@
 /* light_volumes.c - see light_volumes.h. */
 #include "light_volumes.h"
 
+#include "frame_timer.h"
 #include "log.h"
 
 #include <float.h>
@@ -57,6 +58,7 @@ void light_volumes_destroy(light_volumes *lv)
 
 void light_volumes_draw_ambient(const light_volumes *lv, const gbuffer *g, const gpu_scene *gs)
 {
+    frame_timer_mark("lighting");
     glUseProgram(lv->ambient_program);
     gpu_scene_bind_lights(gs, lv->ambient_program, SHADER_UNIT_LIGHTS);
     gbuffer_bind_textures(g, gs, lv->ambient_program, SHADER_UNIT_GBUFFER);
