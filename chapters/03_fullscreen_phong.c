@@ -16,6 +16,10 @@
  * view (V, or --view reach) shows, per pixel, the fraction of the loop that does any work: grey
  * = lights that reach this pixel / lights looped over. With the city's 757 lights most pixels are
  * near black. Chapter 04 skips those zeros before the shader runs.
+ *
+ * Try: --view reach --cutoff 0.1 (each light's reach as a grey step), then --cutoff 0 (every light
+ * reaches every pixel: white); --bench --lights 256 against --lights 16 (the cost grows with the
+ * lights even where they do not reach); R for forward, whose picture this must equal.
  * Read docs/03_fullscreen_phong.md alongside.
  */
 #include "app.h"
