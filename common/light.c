@@ -1,6 +1,8 @@
 /* light.c - see light.h. */
 #include "light.h"
 
+#include "rng.h"
+
 #include <math.h>
 #include <stdlib.h>
 
@@ -89,28 +91,9 @@ double light_radius(double kc, double kl, double kq, double peak, double cutoff)
     return ldexp(r0_m / den, r0_e);
 }
 
-/* splitmix64 (Steele, Lea, Flood 2014): tiny, and the same sequence on every machine. */
-typedef struct light_rng {
-    uint64_t state;
-} light_rng;
-
-static uint64_t rng_next(light_rng *rng)
+static float rng_range(rng *r, float lo, float hi)
 {
-    uint64_t z = (rng->state += UINT64_C(0x9e3779b97f4a7c15));
-    z = (z ^ (z >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
-    z = (z ^ (z >> 27)) * UINT64_C(0x94d049bb133111eb);
-    return z ^ (z >> 31);
-}
-
-/* Uniform in [0, 1) with 53 random bits. */
-static double rng_unit(light_rng *rng)
-{
-    return (double)(rng_next(rng) >> 11) * 0x1.0p-53;
-}
-
-static float rng_range(light_rng *rng, float lo, float hi)
-{
-    float v = (float)(lo + rng_unit(rng) * ((double)hi - lo));
+    float v = (float)(lo + rng_unit(r) * ((double)hi - lo));
     return fminf(fmaxf(v, lo), hi); /* rounding must not step outside the box */
 }
 
@@ -203,13 +186,13 @@ bool light_generate(scene *s, int count, uint32_t seed)
     /* kc = 1, kl = 0, peak = 1: the radius is sqrt((1 / cutoff - 1) / kq). */
     float kq = (float)((1.0 / LIGHT_DEFAULT_CUTOFF - 1.0) / (radius * radius));
 
-    light_rng rng = {.state = seed};
+    rng r = rng_seed(seed);
     for (int i = 0; i < count; i++) {
         scene_light *l = &lights[i];
         for (int a = 0; a < 3; a++)
-            l->position[a] = rng_range(&rng, lo[a], hi[a]);
-        double hue = rng_unit(&rng);
-        double saturation = 0.7 + 0.3 * rng_unit(&rng);
+            l->position[a] = rng_range(&r, lo[a], hi[a]);
+        double hue = rng_unit(&r);
+        double saturation = 0.7 + 0.3 * rng_unit(&r);
         hue_to_rgb(hue, saturation, l->color);
         l->intensity = 1.0f;
         l->kc = 1.0f;

@@ -15,7 +15,7 @@
  * ulps. Negative, NaN or infinite input is a caller error (the scene loader rejects it)
  * and gives NAN.
  *
- * light_generate is the same on every machine for a given seed (its own splitmix64). It
+ * light_generate is the same on every machine for a given seed (common/rng.h). It
  * frees the old lights' keys, and returns false only when out of memory (or count < 0),
  * leaving the scene unchanged. Each light:
  *   position   uniform in light_generate_bounds: the objects' extents (position, keys

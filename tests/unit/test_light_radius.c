@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include "light.h"
+#include "rng.h"
 #include "test_util.h"
 
 /* A few double roundings (frexp/ldexp are exact, then ~6 operations): 1e-12 is ~4500 ulps. */
@@ -173,16 +174,10 @@ static void test_invalid_input_is_nan(void **state)
     }
 }
 
-/* splitmix64, for reproducible samples. */
-static uint64_t sample_state = 0x5eed;
+/* The course's generator, for reproducible samples. */
+static rng sample_rng = {0x5eed};
 
-static double sample_unit(void)
-{
-    uint64_t z = (sample_state += UINT64_C(0x9e3779b97f4a7c15));
-    z = (z ^ (z >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
-    z = (z ^ (z >> 27)) * UINT64_C(0x94d049bb133111eb);
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-}
+static double sample_unit(void) { return rng_unit(&sample_rng); }
 
 /* 10^u, u uniform in [lo, hi]; `zero` of the time exactly 0. */
 static double sample_log(double lo, double hi, double zero)

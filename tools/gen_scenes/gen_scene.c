@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "gen_color.h"
 #include "gen_format.h"
 #include "light.h"
 
@@ -39,12 +40,12 @@ void gen_scene_add_object(gen_scene *s, int mesh, int material, const double pos
     memcpy(o->scale, scale, sizeof o->scale);
 }
 
-void gen_scene_add_light(gen_scene *s, gen_rng *r, const double position[3])
+void gen_scene_add_light(gen_scene *s, rng *r, const double position[3])
 {
     gen_light *l = &s->lights[s->light_count++];
     memcpy(l->position, position, sizeof l->position);
-    gen_rng_color(r, 0.35, 0.85, l->color);
-    l->intensity = gen_rng_uniform(r, 0.8, 1.2);
+    gen_color_random(r, 0.35, 0.85, l->color);
+    l->intensity = rng_uniform(r, 0.8, 1.2);
 }
 
 static void gen_scene_write_count(long n, FILE *f)

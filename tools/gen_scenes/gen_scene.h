@@ -19,7 +19,7 @@
 #include <stdbool.h>
 
 #include "gen_path.h"
-#include "gen_rng.h"
+#include "rng.h"
 
 #define GEN_MAX_MESHES 4
 #define GEN_MAX_MATERIALS 16
@@ -73,7 +73,7 @@ int gen_scene_add_material(gen_scene *s, const char *name, const double albedo[3
                            double shininess);
 void gen_scene_add_object(gen_scene *s, int mesh, int material, const double position[3], double rotate_y,
                           const double scale[3]);
-void gen_scene_add_light(gen_scene *s, gen_rng *r, const double position[3]);
+void gen_scene_add_light(gen_scene *s, rng *r, const double position[3]);
 bool gen_scene_write(const gen_scene *s, const char *path);
 
 #endif

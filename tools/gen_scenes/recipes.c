@@ -7,7 +7,8 @@
 
 #include "gen_format.h"
 #include "gen_path.h"
-#include "gen_rng.h"
+#include "rng.h"
+#include "gen_color.h"
 #include "gen_scene.h"
 #include "log.h"
 #include "mesh_data.h"
@@ -28,48 +29,48 @@ typedef struct city_grid {
     double origin; /* x and z of the first block's corner; the grid is centred on 0 */
 } city_grid;
 
-static void recipes_add_city_materials(gen_scene *s, gen_rng *r, int concrete[8])
+static void recipes_add_city_materials(gen_scene *s, rng *r, int concrete[8])
 {
     for (int i = 0; i < 8; i++) {
-        double grey = gen_rng_uniform(r, 0.45, 0.8), tint[3];
-        gen_rng_color(r, 0.05, 0.2, tint);
+        double grey = rng_uniform(r, 0.45, 0.8), tint[3];
+        gen_color_random(r, 0.05, 0.2, tint);
         double albedo[3] = {grey * tint[0], grey * tint[1], grey * tint[2]};
         char name[32];
         snprintf(name, sizeof name, "concrete%d", i);
-        double specular = gen_rng_uniform(r, 0.15, 0.35);
-        concrete[i] = gen_scene_add_material(s, name, albedo, specular, 16 + 8 * gen_rng_below(r, 3));
+        double specular = rng_uniform(r, 0.15, 0.35);
+        concrete[i] = gen_scene_add_material(s, name, albedo, specular, 16 + 8 * rng_below(r, 3));
     }
 }
 
 /* One building on the lot at (x0, z0), width_lots wide: a random footprint inside the lot, and a
  * height that grows towards downtown (the origin). */
-static void recipes_add_city_building(gen_scene *s, gen_rng *r, const city_grid *g, double x0, double z0,
+static void recipes_add_city_building(gen_scene *s, rng *r, const city_grid *g, double x0, double z0,
                                       double width_lots, int box, const int concrete[8])
 {
     double lot = g->lot;
-    double w = lot * width_lots * gen_rng_uniform(r, 0.62, 0.92);
-    double d = lot * gen_rng_uniform(r, 0.62, 0.92);
+    double w = lot * width_lots * rng_uniform(r, 0.62, 0.92);
+    double d = lot * rng_uniform(r, 0.62, 0.92);
     double cx = x0 + 0.5 * lot * width_lots;
-    cx += gen_rng_uniform(r, -0.5, 0.5) * (lot * width_lots - w);
-    double cz = z0 + 0.5 * lot + gen_rng_uniform(r, -0.5, 0.5) * (lot - d);
-    double dist = sqrt(cx * cx + cz * cz) / 50.0, u = gen_rng_uniform(r, 0, 1);
-    double h = 0.8 + gen_rng_uniform(r, 0, 2.0) + 10.0 * exp(-3.0 * dist * dist) * u * u;
-    if (gen_rng_below(r, 60) == 0) {
-        h += gen_rng_uniform(r, 4, 9); /* the odd tower outside downtown */
+    cx += rng_uniform(r, -0.5, 0.5) * (lot * width_lots - w);
+    double cz = z0 + 0.5 * lot + rng_uniform(r, -0.5, 0.5) * (lot - d);
+    double dist = sqrt(cx * cx + cz * cz) / 50.0, u = rng_uniform(r, 0, 1);
+    double h = 0.8 + rng_uniform(r, 0, 2.0) + 10.0 * exp(-3.0 * dist * dist) * u * u;
+    if (rng_below(r, 60) == 0) {
+        h += rng_uniform(r, 4, 9); /* the odd tower outside downtown */
     }
-    gen_scene_add_object(s, box, concrete[gen_rng_below(r, 8)], (double[3]){cx, 0.5 * h, cz}, 0,
+    gen_scene_add_object(s, box, concrete[rng_below(r, 8)], (double[3]){cx, 0.5 * h, cz}, 0,
                          (double[3]){w, h, d});
 }
 
 /* Ten random pairs of lots merge into wide buildings, which leaves exactly 2,490 buildings. */
-static void recipes_add_city_buildings(gen_scene *s, gen_rng *r, const city_grid *g, int box,
+static void recipes_add_city_buildings(gen_scene *s, rng *r, const city_grid *g, int box,
                                        const int concrete[8])
 {
     /* merged[b][row][col]: 1 = left half of a wide building, 2 = its right half (skipped) */
     unsigned char merged[CITY_BLOCKS * CITY_BLOCKS][CITY_LOTS][CITY_LOTS] = {{{0}}};
     for (int m = 0; m < CITY_MERGES;) {
-        int b = gen_rng_below(r, CITY_BLOCKS * CITY_BLOCKS), row = gen_rng_below(r, CITY_LOTS);
-        int col = gen_rng_below(r, CITY_LOTS - 1);
+        int b = rng_below(r, CITY_BLOCKS * CITY_BLOCKS), row = rng_below(r, CITY_LOTS);
+        int col = rng_below(r, CITY_LOTS - 1);
         if (merged[b][row][col] == 0 && merged[b][row][col + 1] == 0) {
             merged[b][row][col] = 1;
             merged[b][row][col + 1] = 2;
@@ -95,14 +96,14 @@ static void recipes_add_city_buildings(gen_scene *s, gen_rng *r, const city_grid
 }
 
 /* Lights on the street centre lines (the 9 between blocks and the ring road), 1-3 units up. */
-static void recipes_add_city_lights(gen_scene *s, gen_rng *r, const city_grid *g)
+static void recipes_add_city_lights(gen_scene *s, rng *r, const city_grid *g)
 {
     for (int i = 0; i < CITY_LIGHTS; i++) {
-        int street_index = gen_rng_below(r, CITY_BLOCKS + 1);
-        double across = g->origin - 0.5 * g->street + street_index * g->pitch + gen_rng_uniform(r, -0.4, 0.4);
-        double along = gen_rng_uniform(r, g->origin - g->street, -g->origin + g->street);
-        double y = gen_rng_uniform(r, 1.0, 3.0);
-        bool along_x = gen_rng_below(r, 2) == 0;
+        int street_index = rng_below(r, CITY_BLOCKS + 1);
+        double across = g->origin - 0.5 * g->street + street_index * g->pitch + rng_uniform(r, -0.4, 0.4);
+        double along = rng_uniform(r, g->origin - g->street, -g->origin + g->street);
+        double y = rng_uniform(r, 1.0, 3.0);
+        bool along_x = rng_below(r, 2) == 0;
         gen_scene_add_light(s, r, along_x ? (double[3]){along, y, across} : (double[3]){across, y, along});
     }
 }
@@ -115,7 +116,7 @@ static void recipes_build_city(gen_scene *s)
                          .lot = block / CITY_LOTS,
                          .pitch = block + street,
                          .origin = -0.5 * (CITY_BLOCKS * block + (CITY_BLOCKS - 1) * street)};
-    gen_rng r = {0x0c17u * 2654435761u};
+    rng r = rng_seed(0x0c17u * 2654435761u);
 
     *s = (gen_scene){
         .notes = {"city.scene - a student deferred-rendering paper's city scene, rebuilt: 2,490 cube",
@@ -141,7 +142,7 @@ static void recipes_build_bunnies(gen_scene *s, const char *bunny_spec, long bun
 {
     enum { GRID = 5 };
     const double spacing = 1.6;
-    gen_rng r = {0xb0bbu * 2654435761u};
+    rng r = rng_seed(0xb0bbu * 2654435761u);
 
     *s = (gen_scene){
         .notes = {"bunnies.scene - a student deferred-rendering paper's bunny scene, rebuilt: 125",
@@ -164,15 +165,15 @@ static void recipes_build_bunnies(gen_scene *s, const char *bunny_spec, long bun
             for (int x = 0; x < GRID; x++) {
                 double p[3] = {x * spacing - half, y * spacing - half - 0.5, z * spacing - half};
                 /* One draw per statement: argument evaluation order is unspecified in C. */
-                int material = fur[gen_rng_below(&r, 6)];
-                gen_scene_add_object(s, bunny, material, p, (double)gen_rng_below(&r, 360), ONE);
+                int material = fur[rng_below(&r, 6)];
+                gen_scene_add_object(s, bunny, material, p, (double)rng_below(&r, 360), ONE);
             }
         }
     }
     for (int i = 0; i < 100; i++) {
         double p[3];
         for (int k = 0; k < 3; k++) {
-            p[k] = gen_rng_uniform(&r, -half - 0.8, half + 0.8);
+            p[k] = rng_uniform(&r, -half - 0.8, half + 0.8);
         }
         gen_scene_add_light(s, &r, p);
     }
@@ -203,7 +204,7 @@ static bool recipes_build_sphere(gen_scene *s)
 {
     enum { SLICES = 100, STACKS = 101, LIGHTS = 100 };
     const double radius = 2.0;
-    gen_rng r = {0x5e7eu * 2654435761u};
+    rng r = rng_seed(0x5e7eu * 2654435761u);
 
     *s = (gen_scene){
         .notes = {"sphere.scene - a student deferred-rendering paper's sphere scene, rebuilt: one",
@@ -225,7 +226,7 @@ static bool recipes_build_sphere(gen_scene *s)
     const double golden = RECIPES_PI * (3.0 - sqrt(5.0));
     for (int i = 0; i < LIGHTS; i++) {
         double y = 1.0 - 2.0 * (i + 0.5) / LIGHTS, ring = sqrt(1.0 - y * y), phi = golden * i;
-        double shell = radius + gen_rng_uniform(&r, 0.15, 0.6);
+        double shell = radius + rng_uniform(&r, 0.15, 0.6);
         double p[3] = {shell * ring * cos(phi), shell * y, shell * ring * sin(phi)};
         gen_scene_add_light(s, &r, p);
     }
@@ -236,7 +237,7 @@ static bool recipes_build_sphere(gen_scene *s)
 static void recipes_build_teapots(gen_scene *s, const char *teapot_spec, int teapot_vertices,
                                   long teapot_triangles)
 {
-    gen_rng r = {0x7ea0u * 2654435761u};
+    rng r = rng_seed(0x7ea0u * 2654435761u);
     static char model_note[160]; /* the scene keeps a pointer to it until it is written */
     char count[32];
     snprintf(model_note, sizeof model_note,
@@ -265,12 +266,12 @@ static void recipes_build_teapots(gen_scene *s, const char *teapot_spec, int tea
         double angle = 45.0 * i, a = angle * RECIPES_PI / 180.0;
         double p[3] = {ring * cos(a), 0, ring * sin(a)};
         /* The spout is +x in model space; R_y(-angle - 90) turns it along the ring. */
-        double turn = fmod(-angle - 90.0 + gen_rng_uniform(&r, -10, 10) + 720.0, 360.0);
+        double turn = fmod(-angle - 90.0 + rng_uniform(&r, -10, 10) + 720.0, 360.0);
         gen_scene_add_object(s, teapot, glaze[i % 4], p, turn, (double[3]){1.5, 1.5, 1.5});
     }
     for (int i = 0; i < 80; i++) {
-        double radius = 7.5 * sqrt(gen_rng_uniform(&r, 0, 1)), a = gen_rng_uniform(&r, 0, 2.0 * RECIPES_PI);
-        double p[3] = {radius * cos(a), gen_rng_uniform(&r, 0.3, 2.5), radius * sin(a)};
+        double radius = 7.5 * sqrt(rng_uniform(&r, 0, 1)), a = rng_uniform(&r, 0, 2.0 * RECIPES_PI);
+        double p[3] = {radius * cos(a), rng_uniform(&r, 0.3, 2.5), radius * sin(a)};
         gen_scene_add_light(s, &r, p);
     }
 }

@@ -6,7 +6,7 @@
  *
  * The scenes rebuild, in spirit, the test scenes of published deferred-shading results (a city
  * of cubes, a field of bunnies, one dense sphere, a table of teapots). Each draws from its own
- * gen_rng with a fixed seed: the files are reproducible byte for byte, and changing one recipe
+ * rng with a fixed seed: the files are reproducible byte for byte, and changing one recipe
  * never shifts another's numbers.
  *
  * Both folders must exist, and models_dir must already hold bunny.ply (tools/bunny_to_ply.mjs
