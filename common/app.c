@@ -114,8 +114,8 @@ static bool save_screenshot(const app *a, const char *path)
     if (!image_create(&img, a->width, a->height))
         return false;
     bool ok = fbo_read_rgba8(&a->target, 0, img.pixels);
-    image_flip_rows(&img); /* PNG rows go top first */
-    ok = ok && image_write_png(path, &img);
+    image_flip_rows(&img); /* image files store the top row first */
+    ok = ok && image_write(path, &img);
     image_destroy(&img);
     if (ok)
         log_info("wrote %s (%dx%d)", path, a->width, a->height);
@@ -388,6 +388,11 @@ int app_run(const app_desc *desc, int argc, char **argv)
         return rc == CLI_PARSE_DONE ? 0 : rc;
     log_set_verbose(opt.verbose);
     log_set_quiet(opt.bench);
+    if (opt.screenshot && image_format_of(opt.screenshot) == IMAGE_UNKNOWN) {
+        log_error("%s: --screenshot '%s': unknown image format (end the name in .png, .bmp, .tga or .jpg)",
+                  desc->cli.program, opt.screenshot);
+        return EXIT_CODE_USAGE;
+    }
     data_dir_set(opt.data_dir);
     app a;
     app_init(&a, desc, &opt);

@@ -13,18 +13,9 @@
 static bool load_mesh(const scene *s, const scene_mesh *decl, mesh *out)
 {
     mesh_data data;
-    bool ok = false;
-    char origin[SCENE_PATH_MAX + 32];
-    snprintf(origin, sizeof origin, "%s:%d", s->path, decl->line);
-    switch (decl->kind) {
-    case SCENE_MESH_CUBE: ok = mesh_data_cube(&data); break;
-    case SCENE_MESH_PLANE: ok = mesh_data_plane(&data); break;
-    case SCENE_MESH_SPHERE: ok = mesh_data_sphere(&data, decl->slices, decl->stacks); break;
-    case SCENE_MESH_FILE: ok = mesh_data_load(&data, decl->path, origin); break;
-    }
-    if (!ok)
+    if (!mesh_data_from_scene(&data, s, decl))
         return false;
-    ok = mesh_create(&data, out);
+    bool ok = mesh_create(&data, out);
     mesh_data_destroy(&data);
     return ok;
 }

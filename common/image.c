@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 #include <stb_image.h>
@@ -77,13 +78,37 @@ static void png_sink_write(void *context, void *data, int size)
         sink->error = errno ? errno : EIO;
 }
 
-/* Writes the PNG into an already open file and closes it; returns 0 or an errno value. */
-static int png_write_and_close(FILE *file, const image *img)
+image_format image_format_of(const char *path)
+{
+    static const struct {
+        const char *ext;
+        image_format format;
+    } known[] = {{".png", IMAGE_PNG}, {".bmp", IMAGE_BMP}, {".tga", IMAGE_TGA}, {".jpg", IMAGE_JPG}, {".jpeg", IMAGE_JPG}};
+    const char *dot = strrchr(path, '.');
+    for (size_t i = 0; dot && !strchr(dot, '/') && i < sizeof known / sizeof known[0]; i++)
+        if (strcasecmp(dot, known[i].ext) == 0)
+            return known[i].format;
+    return IMAGE_UNKNOWN;
+}
+
+/* JPEG quality: high enough that a screenshot's flat colours show no blocks. */
+#define JPG_QUALITY 95
+
+/* Writes the image into an already open file and closes it; returns 0 or an errno value. */
+static int write_and_close(FILE *file, const image *img, image_format format)
 {
     png_sink sink = {.file = file, .error = 0};
     errno = 0;
-    int encoded = stbi_write_png_to_func(png_sink_write, &sink, img->width, img->height, 4, img->pixels,
-                                         img->width * 4);
+    int w = img->width, h = img->height, encoded = 0;
+    switch (format) {
+    case IMAGE_PNG: encoded = stbi_write_png_to_func(png_sink_write, &sink, w, h, 4, img->pixels, w * 4); break;
+    case IMAGE_BMP: encoded = stbi_write_bmp_to_func(png_sink_write, &sink, w, h, 4, img->pixels); break;
+    case IMAGE_TGA: encoded = stbi_write_tga_to_func(png_sink_write, &sink, w, h, 4, img->pixels); break;
+    case IMAGE_JPG:
+        encoded = stbi_write_jpg_to_func(png_sink_write, &sink, w, h, 4, img->pixels, JPG_QUALITY);
+        break;
+    case IMAGE_UNKNOWN: break;
+    }
     int error = sink.error;
     if (!error && !encoded)
         error = ENOMEM; /* stb only fails when it cannot allocate its buffers */
@@ -97,7 +122,19 @@ static int png_write_and_close(FILE *file, const image *img)
     return error;
 }
 
-bool image_write_png(const char *path, const image *img)
+bool image_write_png(const char *path, const image *img) { return image_write_as(path, img, IMAGE_PNG); }
+
+bool image_write(const char *path, const image *img)
+{
+    image_format format = image_format_of(path);
+    if (format == IMAGE_UNKNOWN) {
+        log_error("cannot write %s: unknown image format (the name must end in .png, .bmp, .tga or .jpg)", path);
+        return false;
+    }
+    return image_write_as(path, img, format);
+}
+
+bool image_write_as(const char *path, const image *img, image_format format)
 {
     if (!img->pixels || img->width <= 0 || img->height <= 0 || img->width > INT_MAX / 4) {
         log_error("cannot write %s: empty or oversized image", path);
@@ -120,7 +157,7 @@ bool image_write_png(const char *path, const image *img)
         log_error("cannot write %s: %s", path, strerror(error));
         return false;
     }
-    error = png_write_and_close(file, img);
+    error = write_and_close(file, img, format);
     if (!error && rename(tmp, path) != 0)
         error = errno;
     if (error) {

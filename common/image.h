@@ -4,6 +4,10 @@
  *   image_destroy(img)
  *   image_load_png(path, img)               any PNG, converted to RGBA8
  *   image_write_png(path, img)              atomic: PATH.tmp-PID then rename(); the old file stays on failure
+ *   image_write(path, img)                  the same, in the format the name's extension says (.png,
+ *                                           .bmp, .tga, .jpg/.jpeg); an unknown extension is an error
+ *   image_write_as(path, img, format)       the same in a given format
+ *   image_format_of(path)                   the format an extension names, or IMAGE_UNKNOWN
  *   image_flip_rows(img)                    GL reads bottom-up; PNG is top-down
  *   image_compare(a, b, mask, tol, stats, heat)
  *                                           per-channel RGB stats; mask (may be NULL) selects pixels
@@ -14,6 +18,8 @@
 #define COMMON_IMAGE_H
 
 #include <stdbool.h>
+
+typedef enum image_format { IMAGE_UNKNOWN, IMAGE_PNG, IMAGE_BMP, IMAGE_TGA, IMAGE_JPG } image_format;
 
 typedef struct image {
     int width, height;
@@ -35,6 +41,9 @@ bool image_create(image *img, int width, int height);
 void image_destroy(image *img);
 bool image_load_png(const char *path, image *img);
 bool image_write_png(const char *path, const image *img);
+bool image_write(const char *path, const image *img);
+bool image_write_as(const char *path, const image *img, image_format format);
+image_format image_format_of(const char *path);
 void image_flip_rows(image *img);
 bool image_compare(const image *a, const image *b, const image *mask, int tolerance, image_stats *stats,
                    image *heat);

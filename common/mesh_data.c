@@ -329,3 +329,16 @@ void mesh_data_destroy(mesh_data *m)
     free(m->indices);
     memset(m, 0, sizeof *m);
 }
+
+bool mesh_data_from_scene(mesh_data *m, const scene *s, const scene_mesh *decl)
+{
+    char origin[SCENE_PATH_MAX + 32];
+    snprintf(origin, sizeof origin, "%s:%d", s->path, decl->line);
+    switch (decl->kind) {
+    case SCENE_MESH_CUBE: return mesh_data_cube(m);
+    case SCENE_MESH_PLANE: return mesh_data_plane(m);
+    case SCENE_MESH_SPHERE: return mesh_data_sphere(m, decl->slices, decl->stacks);
+    case SCENE_MESH_FILE: return mesh_data_load(m, decl->path, origin);
+    }
+    return false;
+}

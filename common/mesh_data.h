@@ -6,6 +6,8 @@
  *   mesh_data_icosphere(m, subdivisions) unit-circumradius icosphere (20 * 4^n triangles)
  *   mesh_data_load(m, path, origin)      a model file through Assimp (OBJ, PLY, glTF, ...);
  *                                        origin ("scene.scene:7") prefixes error messages
+ *   mesh_data_from_scene(m, s, decl)     the mesh a scene's `mesh` line declares (built-in or
+ *                                        file), errors at that line
  *   mesh_data_destroy(m)
  *   mesh_data_inradius(m)                smallest distance from the origin to a face's plane:
  *                                        scale a volume mesh by r / inradius to contain the sphere r
@@ -14,6 +16,8 @@
  */
 #ifndef COMMON_MESH_DATA_H
 #define COMMON_MESH_DATA_H
+
+#include "scene.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -34,6 +38,7 @@ bool mesh_data_plane(mesh_data *m);
 bool mesh_data_sphere(mesh_data *m, int slices, int stacks);
 bool mesh_data_icosphere(mesh_data *m, int subdivisions);
 bool mesh_data_load(mesh_data *m, const char *path, const char *origin);
+bool mesh_data_from_scene(mesh_data *m, const scene *s, const scene_mesh *decl);
 void mesh_data_destroy(mesh_data *m);
 double mesh_data_inradius(const mesh_data *m);
 

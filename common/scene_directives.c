@@ -59,9 +59,17 @@ static bool check_camera(parser *p, scene_camera *c, unsigned seen)
         return scene_parser_fail(p, "camera: eye and target are too far apart");
     glm_vec3_cross(view, c->up, side);
     float up_len = glm_vec3_norm(c->up);
-    if (!(glm_vec3_norm(side) > 1e-6f * view_len * up_len) || !isfinite(glm_vec3_norm(side)))
-        return scene_parser_fail(p, "camera: up (%g %g %g) is zero or parallel to the view direction",
-                                 c->up[0], c->up[1], c->up[2]);
+    if (!(glm_vec3_norm(side) > 1e-6f * view_len * up_len) || !isfinite(glm_vec3_norm(side))) {
+        /* Suggest the world axis most nearly at right angles to the view. */
+        int best = 1;
+        for (int k = 0; k < 3; k++)
+            if (fabsf(view[k]) < fabsf(view[best]))
+                best = k;
+        return scene_parser_fail(p,
+                                 "camera: up (%g %g %g) is zero or parallel to the view direction: "
+                                 "try up %d %d %d",
+                                 c->up[0], c->up[1], c->up[2], best == 0, best == 1, best == 2);
+    }
     return true;
 }
 

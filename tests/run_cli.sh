@@ -52,5 +52,12 @@ expect 2 "run with --headless" -- --frames 1
 max=$(env -u DISPLAY "$bin" --headless --gl-info 2>/dev/null | sed -n 's/.*max_width=\([0-9]*\).*/\1/p')
 [ -n "$max" ] || { echo "skip: --gl-info found no GL context"; exit 77; }
 expect 2 "larger than this GL allows" -- --headless --size "$((max + 1))x16" --scene "$src/assets/scenes/default.scene"
+# The screenshot's format follows its extension; an unknown one is refused before any rendering.
+expect 2 "unknown image format" -- --headless --size 32x24 --screenshot "$tmp/shot.gif"
+for ext in bmp tga jpg; do
+  expect 0 "wrote $tmp/shot.$ext" -- --headless --size 32x24 --screenshot "$tmp/shot.$ext"
+done
+magic=$(head -c 2 "$tmp/shot.bmp")
+[ "$magic" = "BM" ] && pass=$((pass + 1)) || { fail=$((fail + 1)); echo "FAIL shot.bmp is not a BMP"; }
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
