@@ -52,9 +52,20 @@ function(chapters_04_07_tests)
     # near 1 add to the G-buffer's 1/255 (docs/06_additive_blending.md). Bound 2, and no 3s.
     course_forward_agreement_test(06_overlap_rgba16f_vs_forward 2 0
       06_additive_blending --scene ${S}/overlap.scene)
-    # The 8-bit buffer clips every blend at 1: a tone map cannot bring the overlaps back.
-    course_golden_test(06_additive_blending_rgba8_reinhard 06_additive_blending 1 0.0001
+    # The 8-bit buffer clips every blend at 1: a tone map cannot bring the overlaps back. The bytes
+    # are checked on llvmpipe only: 8-bit blending rounds differently on other GPUs (an NVIDIA H200
+    # differed in 11.5 % of pixels by up to 11 levels). Everywhere, what the exercise teaches: no
+    # channel above the tone-mapped 1 (Reinhard 0.5, sRGB 188) and a plateau there. Measured on
+    # llvmpipe: brightest 188, 27.7 % of lit pixels on the plateau; the bound asks for half of that.
+    course_golden_test(06_additive_blending_rgba8_reinhard 06_additive_blending 1,255 0.0001,1
       --scene ${S}/overlap.scene --accum rgba8 --tonemap reinhard)
+    add_test(NAME golden.06_rgba8_plateau
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_plateau.sh $<TARGET_FILE:image_levels> 188 0.14
+              ${COURSE_TEST_OUT}/06_rgba8_plateau.png
+              $<TARGET_FILE:06_additive_blending> ${COURSE_RENDER_ARGS}
+              --scene ${S}/overlap.scene --accum rgba8 --tonemap reinhard
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(golden.06_rgba8_plateau PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
     course_golden_test(06_additive_blending_rgba16f_reinhard 06_additive_blending 1 0.0001
       --scene ${S}/overlap.scene --tonemap reinhard)
     chapters_04_07_expect_bug(06_rgba8_saturates
@@ -88,7 +99,9 @@ function(chapters_04_07_tests)
     # 800x800 give chapter 00's picture. Measured: default 3 pixels over 1/255 (0.0005 %), city
     # 63 pixels (0.0098 %, the cut-off spheres of 757 lights, as above) — both within 99.99 %.
     course_forward_agreement_test(07_vs_forward_default_800 1 0.0001 07_face_culling --size 800x800)
-    course_forward_agreement_test(07_vs_forward_city_800 1 0.0001
+    # On an NVIDIA H200 (driver 580.159, EGL) the city measured 79 pixels (0.0123 %) over: the bound
+    # off llvmpipe is 0.02 %; llvmpipe keeps 0.01 %.
+    course_forward_agreement_test(07_vs_forward_city_800 1 0.0001,0.0002
       07_face_culling --size 800x800 --scene assets/scenes/city.scene)
     # The bugs chapter 07 shows, each on the scene where it appears.
     # (At the default cut-off the camera is inside every volume, so only back faces are on screen:

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # run_agreement.sh IMGDIFF OUTDIR NAME TOLERANCE MAX_FRACTION -- COMMAND_A... -- COMMAND_B...
 # Renders the same frame with two commands and compares them: the course's claims
-# ("deferred matches forward", "the pre-pass changes nothing") as checks.
+# ("deferred matches forward", "the pre-pass changes nothing") as checks. TOLERANCE and
+# MAX_FRACTION may be "LLVMPIPE,OTHER" (tests/renderer_bounds.sh).
 set -u
 imgdiff=$1 outdir=$2 name=$3 tol=$4 frac=$5
 shift 5
@@ -10,6 +11,8 @@ a=() b=()
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do a+=("$1"); shift; done
 [ $# -gt 0 ] && shift
 b=("$@")
+. "$(dirname "$0")/renderer_bounds.sh"
+tol=$(bound_for "$tol" "${a[0]}") frac=$(bound_for "$frac" "${a[0]}")
 mkdir -p "$outdir"
 for side in a b; do
   if [ $side = a ]; then cmd=("${a[@]}"); else cmd=("${b[@]}"); fi

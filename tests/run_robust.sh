@@ -162,13 +162,15 @@ check "screenshot into a missing folder" 1 \
 [ ! -e "$tmp/missing-folder" ] && ok "the missing folder was not created" ||
     bad "the missing folder was created"
 
-mkdir -p "$tmp/adir"
-echo "keep me" >"$tmp/adir/inside.txt"
-run -- "${small[@]}" --screenshot "$tmp/adir"
-check "screenshot path that is a folder" 1 "cannot write $tmp/adir"
-[ "$(cat "$tmp/adir/inside.txt")" = "keep me" ] && ok "the folder's content is intact" ||
+mkdir -p "$tmp/adir.png"
+echo "keep me" >"$tmp/adir.png/inside.txt"
+run -- "${small[@]}" --screenshot "$tmp/adir.png"
+check "screenshot path that is a folder" 1 "cannot write $tmp/adir.png"
+[ "$(cat "$tmp/adir.png/inside.txt")" = "keep me" ] && ok "the folder's content is intact" ||
     bad "the folder changed"
 no_temp_files "rename onto a folder" "$tmp"
+run -- "${small[@]}" --screenshot "$tmp/shot.gif"
+check "screenshot in a format the course cannot write" 2 "unknown image format"
 
 echo "not a png" >"$tmp/keep/old.png"
 run -- "${small[@]}" --screenshot "$tmp/keep/old.png"
