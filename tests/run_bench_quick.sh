@@ -37,7 +37,8 @@ NR == 1 {
     want = "sweep,scene,renderer,light_set,lights,active_lights,cutoff_256,width,height,frames,warmup," \
            "median_ms,min_ms,max_ms,fps,status,shaded_pixels,covered_pixels,ideal_pairs,light_evals," \
            "work_ratio,gbuffer_bytes,gbuffer_naive_bytes,max_abs_8bit,mean_abs_8bit,psnr_8bit,max_abs_hdr," \
-           "mean_abs_hdr,psnr_hdr,note"
+           "mean_abs_hdr,psnr_hdr,light_lists_ms,depth_prepass_ms,shading_ms,geometry_ms,lighting_ms," \
+           "present_ms,pass_clock,note"
     if ($0 != want) { print "FAIL: header is\n  " $0 "\nwanted\n  " want; bad = 1 }
     ncol = NF; next
 }

@@ -49,7 +49,7 @@ static const char *const csv_columns =
     "sweep,scene,renderer,light_set,lights,active_lights,cutoff_256,width,height,frames,warmup,median_ms,"
     "min_ms,max_ms,fps,status,shaded_pixels,covered_pixels,ideal_pairs,light_evals,work_ratio,"
     "gbuffer_bytes,gbuffer_naive_bytes,max_abs_8bit,mean_abs_8bit,psnr_8bit,max_abs_hdr,mean_abs_hdr,"
-    "psnr_hdr,note";
+    "psnr_hdr,light_lists_ms,depth_prepass_ms,shading_ms,geometry_ms,lighting_ms,present_ms,pass_clock,note";
 
 bool bench_report_write_csv(const bench_state *st)
 {
@@ -83,6 +83,9 @@ bool bench_report_write_csv(const bench_state *st)
         put_num(f, r->have_error_hdr, "%.6g", r->error_hdr.max_abs);
         put_num(f, r->have_error_hdr, "%.6g", r->error_hdr.mean_abs);
         put_num(f, r->have_error_hdr, "%.2f", r->error_hdr.psnr);
+        for (int k = 0; k < BENCH_PASSES; k++)
+            put_num(f, measured && !isnan(r->pass_ms[k]), "%.3f", r->pass_ms[k]);
+        fprintf(f, ",%s", st->pass_clock ? st->pass_clock : "NA");
         fprintf(f, ",%s\n", r->note); /* notes never hold commas */
     }
     return bench_report_close_tmp(f, tmp, st->opt.out_dir, "bench.csv");

@@ -2,6 +2,7 @@
 #include "frame_stats.h"
 #include "bench_run.h"
 
+#include "frame_timer.h"
 #include "gl_util.h"
 #include "gpu_scene.h"
 #include "light.h"
@@ -18,6 +19,7 @@ typedef struct run_ctx {
     bench_state *st;
     bench_renderers *br;
     bench_measure *m;
+    frame_timer timers[BENCH_RENDERER_MAX]; /* one per renderer: GPU queries are read a frame late */
 } run_ctx;
 
 /* ---- prediction of slow cases ------------------------------------------------------------------ */
@@ -70,7 +72,8 @@ typedef struct case_desc {
 typedef struct case_plan {
     int n, first_row;
     int frames[MAX_LIST], warmup[MAX_LIST];
-    double *times[MAX_LIST]; /* frames[i] timed frames */
+    double *times[MAX_LIST];  /* frames[i] timed frames */
+    double *passes[MAX_LIST]; /* BENCH_PASSES per timed frame, NAN where the frame had no such pass */
 } case_plan;
 
 /* A case predicted over --max-frame-ms is not drawn: its time is the prediction. One predicted over
@@ -116,12 +119,38 @@ static bool plan_case(run_ctx *x, const gpu_scene *gs, const case_desc *c, case_
         row->active_lights = gs->light_count;
         row->cutoff = c->cutoff;
         plan_frames(&x->st->opt, c, row, &p->frames[i], &p->warmup[i]);
-        if (p->frames[i] > 0 && !(p->times[i] = malloc((size_t)p->frames[i] * sizeof(double)))) {
+        if (p->frames[i] > 0 && (!(p->times[i] = malloc((size_t)p->frames[i] * sizeof(double))) ||
+                                 !(p->passes[i] = malloc((size_t)p->frames[i] * BENCH_PASSES * sizeof(double))))) {
             log_error("out of memory for frame times");
             return false;
         }
     }
     return true;
+}
+
+/* A frame's passes into the benchmark's columns (NAN: the renderer has no such pass). */
+static void record_passes(const frame_times *f, double out[BENCH_PASSES])
+{
+    for (int k = 0; k < BENCH_PASSES; k++) {
+        out[k] = NAN;
+        for (int j = 0; f->valid && j < f->count; j++)
+            if (strcmp(f->names[j], bench_pass_names[k]) == 0)
+                out[k] = f->ms[j];
+    }
+}
+
+/* The median of one pass over the timed frames that had it. */
+static double pass_median(const double *passes, int frames, int k)
+{
+    double *v = malloc((size_t)frames * sizeof *v), median = NAN;
+    int n = 0;
+    for (int i = 0; v && i < frames; i++)
+        if (!isnan(passes[i * BENCH_PASSES + k]))
+            v[n++] = passes[i * BENCH_PASSES + k];
+    if (n > 0)
+        median = frame_stats_of(v, n).median;
+    free(v);
+    return median;
 }
 
 /* Warm-up, then the timed frames, renderer after renderer within each round. */
@@ -137,13 +166,18 @@ static bool time_case(run_ctx *x, gpu_scene *gs, const case_desc *c, case_plan *
             /* Warm-up frames are spread over the first rounds; then timed frames follow. */
             if (k >= p->frames[i] + p->warmup[i])
                 continue;
+            frame_timer *t = &x->timers[c->renderers[i]];
             double t0 = bench_measure_now_ms();
+            frame_timer_begin(t);
             ok = gpu_scene_update(gs, 0.0f, c->cutoff, o->width, o->height) &&
                  bench_render_frame(x->br, c->renderers[i], gs, false, NULL);
+            frame_timer_end(t);
             glFinish();
             double ms = bench_measure_now_ms() - t0;
-            if (k >= p->warmup[i])
+            if (k >= p->warmup[i]) {
                 p->times[i][k - p->warmup[i]] = ms;
+                record_passes(&t->last, p->passes[i] + (size_t)(k - p->warmup[i]) * BENCH_PASSES);
+            }
         }
     }
     return ok;
@@ -162,6 +196,8 @@ static void summarise_times(run_ctx *x, const case_desc *c, case_plan *p)
             row->min_ms = st.min;
             row->max_ms = st.max;
         }
+        for (int k = 0; k < BENCH_PASSES; k++)
+            row->pass_ms[k] = f > 0 ? pass_median(p->passes[i], f, k) : NAN;
         if (c->histories)
             history_add(&c->histories[row->renderer], c->lights, row->median_ms);
     }
@@ -171,7 +207,9 @@ static void free_times(case_plan *p)
 {
     for (int i = 0; i < p->n; i++) {
         free(p->times[i]);
+        free(p->passes[i]);
         p->times[i] = NULL;
+        p->passes[i] = NULL;
     }
 }
 
@@ -317,10 +355,26 @@ int bench_run_count_cases(const bench_options *options)
     return options->scene_count * options->light_list_count + options->cutoff_count;
 }
 
-/* The cut-off sweep runs with the light sweep of its scene, whose times predict its slow cases. */
+static bool run_sweeps(run_ctx *x);
+
+/* Every sweep, with one frame timer per renderer for the pass columns. */
 bool bench_run_all(bench_state *st, bench_renderers *br, bench_measure *m)
 {
-    run_ctx x = {st, br, m};
+    run_ctx x = {st, br, m, {{0}}};
+    for (int r = 0; r < BENCH_RENDERER_MAX; r++)
+        if (!frame_timer_create(&x.timers[r]))
+            return false;
+    st->pass_clock = frame_timer_clock(&x.timers[0]);
+    bool ok = run_sweeps(&x);
+    for (int r = 0; r < BENCH_RENDERER_MAX; r++)
+        frame_timer_destroy(&x.timers[r]);
+    return ok;
+}
+
+/* The cut-off sweep runs with the light sweep of its scene, whose times predict its slow cases. */
+static bool run_sweeps(run_ctx *x)
+{
+    bench_state *st = x->st;
     const bench_options *o = &st->opt;
     history histories[BENCH_RENDERER_MAX];
     memset(histories, 0, sizeof histories);
@@ -331,11 +385,11 @@ bool bench_run_all(bench_state *st, bench_renderers *br, bench_measure *m)
         char label[NAME_MAX_LEN];
         bench_options_label_scene(o->scenes[s], label, sizeof label);
         bool cutoff_here = !cutoff_done && strcmp(label, want) == 0;
-        if (!run_scene(&x, o->scenes[s], true, cutoff_here, histories))
+        if (!run_scene(x, o->scenes[s], true, cutoff_here, histories))
             return false;
         cutoff_done = cutoff_done || cutoff_here;
     }
-    if (!cutoff_done && !run_scene(&x, o->cutoff_scene, false, true, histories))
+    if (!cutoff_done && !run_scene(x, o->cutoff_scene, false, true, histories))
         return false;
     return true;
 }

@@ -32,6 +32,9 @@ static void read_cpu_info(bench_state *st)
     fclose(f);
 }
 
+const char *const bench_pass_names[BENCH_PASSES] = {"light lists", "depth pre-pass", "shading",
+                                                    "geometry",    "lighting",       "present"};
+
 void bench_state_read_machine(bench_state *st)
 {
     read_cpu_info(st);

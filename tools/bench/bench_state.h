@@ -22,6 +22,10 @@
 
 #include <stdbool.h>
 
+/* The passes whose medians get a column of their own (frame_timer's names; a renderer has some). */
+#define BENCH_PASSES 6
+extern const char *const bench_pass_names[BENCH_PASSES];
+
 typedef enum bench_status {
     BENCH_STATUS_MEASURED,
     BENCH_STATUS_FEW_FRAMES,
@@ -37,6 +41,7 @@ typedef struct bench_row {
     double cutoff;
     int frames, warmup;
     double median_ms, min_ms, max_ms;
+    double pass_ms[BENCH_PASSES]; /* median per pass on the pass clock; NAN where it has none */
     bench_status status;
     char note[160];
     bool have_work;
@@ -55,6 +60,7 @@ typedef struct bench_state {
     char cpu[256];
     int cores;
     char gl_renderer[256], gl_version[256];
+    const char *pass_clock; /* frame_timer_clock(): "gpu-timer" or "glFinish+monotonic" */
 } bench_state;
 
 void bench_state_read_machine(bench_state *st);
