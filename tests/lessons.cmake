@@ -4,3 +4,8 @@ add_test(NAME lessons.first_in_chapter COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests
 find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
 add_test(NAME lessons.what_changed COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/doc_diffs.py --check ${CMAKE_SOURCE_DIR})
 set_tests_properties(lessons.first_in_chapter lessons.what_changed PROPERTIES LABELS unit)
+# Every measured figure a page shows is a verbatim copy of one dated run in docs/data/
+# (scripts/update-docs.sh writes it; tests/doc_generated.py compares).
+add_test(NAME lessons.generated_figures
+  COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/doc_generated.py --check ${CMAKE_SOURCE_DIR})
+set_tests_properties(lessons.generated_figures PROPERTIES LABELS unit)

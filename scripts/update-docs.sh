@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# update-docs.sh [--quick] - one dated run behind every figure the pages show.
+#
+# Builds, then measures on this machine and writes docs/data/:
+#   chapters.md     every chapter's --bench line on the default scene (its 8 lights, and 256
+#                   generated ones), deferred and forward, with each pass's median; and the
+#                   tables of single chapters the pages discuss (02's views, 03's light counts,
+#                   06's accumulation formats, 07's culling modes and the city, and the
+#                   hard-cases page's 200 overlapping lights at six cut-offs)
+#   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots
+# Each file starts with the same stamp (date, CPU, cores, GL renderer, commit, clock). The pages
+# embed sections of these files verbatim between <!-- generated: FILE#SECTION --> markers, and
+# tests/doc_generated.py fails when a page's copy differs from the file (--update refreshes them).
+# Takes about 8 minutes on 2 cores with llvmpipe; --quick (seconds) is for trying the script.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+quick=false
+[ "${1:-}" = "--quick" ] && quick=true
+"$root/scripts/build.sh" "$root/build" >/dev/null
+data=docs/data
+mkdir -p "$data/bench"
+
+renderer=$(build/bin/00_forward --headless --gl-info | sed -n 's/^gl: renderer=//p')
+version=$(build/bin/00_forward --headless --gl-info | sed -n 's/^gl: version=//p')
+cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)
+stamp="Measured $(date -u '+%Y-%m-%d %H:%M UTC') on ${cpu:-an unknown CPU} ($(nproc) cores), $renderer, \
+$version; commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo '+changes'); \
+frame times with glFinish and a monotonic clock; medians over the frames each table states."
+
+# One table row from a --bench line: chapter, renderer, median, passes, shaded pixels.
+row() {
+  awk '{
+    for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2]
+      if (kv[1] ~ /_ms$/ && kv[1] !~ /^(median|min|max|mean)_ms$/) {
+        name = substr(kv[1], 1, length(kv[1]) - 3); gsub("_", " ", name)
+        passes = passes (passes ? ", " : "") name " " kv[2] } }
+    shaded = v["shaded_pixels"] == "-1" ? "—" : v["shaded_pixels"]   # the chapter does not count them
+    printf "| %s | %s | %s | %s | %s |\n", v["chapter"], v["renderer"], v["median_ms"], passes, shaded
+  }'
+}
+
+header() { # TITLE
+  printf '## %s\n\n| chapter | renderer | median ms | passes (median ms) | shaded pixels |\n|---|---|---:|---|---:|\n' "$1"
+}
+
+# One --bench run as a table row: BINARY ARGS...
+run() { "build/bin/$1" --headless --bench --frames 10 "${@:2}" | row; }
+
+# chapter_table TITLE ARGS...: every chapter, deferred then forward (chapter 00: its four renderers).
+chapter_table() {
+  local title=$1
+  shift
+  header "$title"
+  for bin in build/bin/[0-9][0-9]_*; do
+    local renderers=(deferred forward)
+    case $(basename "$bin") in
+      00_*) renderers=(forward forward-naive forward-prepass forward-lists) ;;
+      01_*) renderers=(offscreen forward) ;;
+    esac
+    for r in "${renderers[@]}"; do
+      run "$(basename "$bin")" --renderer "$r" "$@"
+    done
+  done
+  echo
+}
+
+# The pages' other tables: one option of one chapter at a time (the row says which in its renderer
+# column only when the option is the renderer, so each table's title names what varies).
+{
+  printf '# Chapter timings\n\nEach row: `--bench --frames 10` (3 warm-up frames), the default scene unless the section says otherwise.\n\n%s\n\n' "$stamp"
+  chapter_table "default-800x600" --size 800x600
+  chapter_table "default-256-lights-800x600" --size 800x600 --lights 256
+  for view in albedo final; do
+    header "02-view-$view-800x600"; run 02_mrt_gbuffer --size 800x600 --view "$view"; echo
+  done
+  for n in 64 256; do
+    header "03-$n-lights-800x600"
+    run 03_fullscreen_phong --size 800x600 --lights "$n"
+    run 03_fullscreen_phong --size 800x600 --lights "$n" --renderer forward
+    echo
+  done
+  for accum in rgba16f rgba32f rgba8; do
+    header "06-accum-$accum-800x600"; run 06_additive_blending --size 800x600 --accum "$accum"; echo
+  done
+  for cull in front back none; do
+    header "07-cull-$cull-cutoff-0.1-800x600"; run 07_face_culling --size 800x600 --cutoff 0.1 --cull "$cull"; echo
+  done
+  for cutoff in 0 0.001953125 0.00390625 0.009765625 0.01953125 0.0390625; do # 0 .. 10/256
+    header "hard-overlap-cutoff-$cutoff-320x240"
+    run 07_face_culling --size 320x240 --scene tests/scenes/hard_overlap200.scene --cutoff "$cutoff"
+    run 07_face_culling --size 320x240 --scene tests/scenes/hard_overlap200.scene --cutoff "$cutoff" \
+      --renderer forward
+    echo
+  done
+  header "07-city-800x800"
+  run 07_face_culling --size 800x800 --scene assets/scenes/city.scene
+  run 07_face_culling --size 800x800 --scene assets/scenes/city.scene --renderer forward
+  echo
+} >"$data/chapters.md.tmp"
+mv "$data/chapters.md.tmp" "$data/chapters.md"
+echo "wrote $data/chapters.md"
+
+bench_args=()
+$quick && bench_args=(--quick)
+build/bin/bench --out "$data/bench" "${bench_args[@]}"
+# The stamp goes on top of the benchmark's own report, which names the machine too.
+{ printf '%s\n\n' "$stamp"; cat "$data/bench/bench.md"; } >"$data/bench/bench.md.tmp"
+mv "$data/bench/bench.md.tmp" "$data/bench/bench.md"
+/usr/bin/python3 tests/doc_generated.py --update "$root"
+echo "the pages now show this run; review with: git diff docs"
