@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # update-docs.sh [--quick] - one dated run behind every figure the pages show.
 #
-# Builds, then measures on this machine and writes docs/data/:
+# Builds, then measures on this machine and writes docs/data/ (on a GPU: docs/data/gpu/, a second
+# set the pages can show beside the software one):
 #   chapters.md     every chapter's --bench line on the default scene (its 8 lights, and 256
 #                   generated ones), deferred and forward, with each pass's median; and the
 #                   tables of single chapters the pages discuss (02's views, 03's light counts,
@@ -18,10 +19,13 @@ cd "$root"
 quick=false
 [ "${1:-}" = "--quick" ] && quick=true
 "$root/scripts/build.sh" "$root/build" >/dev/null
-data=docs/data
-mkdir -p "$data/bench"
-
 renderer=$(build/bin/00_forward --headless --gl-info | sed -n 's/^gl: renderer=//p')
+# llvmpipe's run is the pages' main set; a GPU's goes beside it, so both can be shown side by side.
+case $renderer in
+  *llvmpipe*) data=docs/data ;;
+  *) data=docs/data/gpu ;;
+esac
+mkdir -p "$data/bench"
 version=$(build/bin/00_forward --headless --gl-info | sed -n 's/^gl: version=//p')
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)
 stamp="Measured $(date -u '+%Y-%m-%d %H:%M UTC') on ${cpu:-an unknown CPU} ($(nproc) cores), $renderer, \
