@@ -237,6 +237,23 @@ static void start_keys(parser *p, last_kind last)
     p->last_key_cap = 0;
 }
 
+/* "unknown mesh 'x' (declared: a, b)": the names a learner could have meant. */
+static bool fail_unknown(parser *p, const char *what, const char *name, name_list list, int count)
+{
+    char declared[256] = "";
+    size_t used = 0;
+    for (int i = 0; i < count && used + 4 < sizeof declared; i++) {
+        int n = snprintf(declared + used, sizeof declared - used, "%s%s", i ? ", " : "",
+                         list.first + (size_t)i * list.stride);
+        used = n > 0 ? used + (size_t)n : used;
+    }
+    if (count == 0)
+        return scene_parser_fail(p, "unknown %s '%s' (none declared yet: declare it with a %s line first)",
+                                 what, name, what);
+    return scene_parser_fail(p, "unknown %s '%s' (declared: %s; a %s line must come first)", what, name,
+                             declared, what);
+}
+
 /* The object's mesh and material, by the names declared on earlier lines. */
 static bool take_object_refs(parser *p, scene_object *o)
 {
@@ -245,13 +262,13 @@ static bool take_object_refs(parser *p, scene_object *o)
         return false;
     const name_slot *mesh = scene_parser_find_name(&p->mesh_names, mesh_list(p), name);
     if (!mesh)
-        return scene_parser_fail(p, "unknown mesh '%s' (declare it with a mesh line first)", name);
+        return fail_unknown(p, "mesh", name, mesh_list(p), p->s.mesh_count);
     o->mesh = mesh->index;
     if (!scene_parser_take_name(p, "object material", name))
         return false;
     const name_slot *material = scene_parser_find_name(&p->material_names, material_list(p), name);
     if (!material)
-        return scene_parser_fail(p, "unknown material '%s' (declare it with a material line first)", name);
+        return fail_unknown(p, "material", name, material_list(p), p->s.material_count);
     o->material = material->index;
     return true;
 }

@@ -151,8 +151,13 @@ static bool set_lights(bench_options *o, const char *list)
 
 static bool set_renderers(bench_options *o, const char *list)
 {
-    return set_list(o, list, &o->renderer_count, read_renderer, "bad --renderers list",
-                    "unknown renderer in --renderers");
+    /* The message lists the valid names (common/renderers.c). */
+    char bad[512];
+    int n = snprintf(bad, sizeof bad, "unknown renderer in --renderers (one of:");
+    for (int r = 0; r < bench_renderer_count() && n > 0 && n < (int)sizeof bad - 32; r++)
+        n += snprintf(bad + n, sizeof bad - (size_t)n, " %s", bench_renderer_name(r));
+    snprintf(bad + n, sizeof bad - (size_t)n, ")");
+    return set_list(o, list, &o->renderer_count, read_renderer, "bad --renderers list", bad);
 }
 
 static bool set_cutoffs(bench_options *o, const char *list)
