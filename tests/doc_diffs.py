@@ -14,9 +14,10 @@ line (not a comment or an #include) that matches it; an empty pattern keeps ever
     doc_diffs.py --update ROOT   rewrite every block from the files
 """
 import difflib
-import pathlib
 import re
 import sys
+
+import doc_blocks
 
 MARK = re.compile(r"<!-- what-changed: (\S+) (\S+)(?: (.*?))? -->\n(.*?)<!-- /what-changed -->\n", re.S)
 
@@ -50,36 +51,10 @@ def block(root, old, new, pattern):
     return f"```diff\n{text}\n```\n", len(keep), len(all_hunks)
 
 
-def main():
-    if len(sys.argv) != 3 or sys.argv[1] not in ("--check", "--update"):
-        print(__doc__.strip().splitlines()[0])
-        print("usage: doc_diffs.py --check|--update ROOT", file=sys.stderr)
-        return 2
-    root = pathlib.Path(sys.argv[2])
-    failures = pages = 0
-    for page in sorted((root / "docs").glob("[0-9][0-9]_*.md")):
-        text = page.read_text()
-        def replace(m):
-            nonlocal failures, pages
-            pages += 1
-            want, kept, total = block(root, m.group(1), m.group(2), m.group(3) or "")
-            if m.group(4) != want and sys.argv[1] == "--update":
-                print(f"updated {page.relative_to(root)}: {kept} of {total} hunks")
-            elif m.group(4) != want:
-                failures += 1
-                print(f"{page.relative_to(root)}: the what-changed block differs from "
-                      f"diff -u {m.group(1)} {m.group(2)} (run tests/doc_diffs.py --update .)")
-            else:
-                print(f"ok   {page.relative_to(root)}: {kept} of {total} hunks of {m.group(1)} -> {m.group(2)}")
-            return m.group(0).replace(m.group(4), want)
-        updated = MARK.sub(replace, text)
-        if sys.argv[1] == "--update" and updated != text:
-            page.write_text(updated)
-    if pages == 0:
-        print("no what-changed block found", file=sys.stderr)
-        return 1
-    return 1 if failures and sys.argv[1] == "--check" else 0
+def expected(root, m):
+    want, kept, total = block(root, m.group(1), m.group(2), m.group(3) or "")
+    return want, f"{kept} of {total} hunks of {m.group(1)} -> {m.group(2)}"
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(doc_blocks.run("doc_diffs.py", MARK, "[0-9][0-9]_*.md", expected))
