@@ -300,6 +300,8 @@ static int app_open(app *a, const app_desc *desc, const cli_options *opt)
                       data_dir(), data_dir_origin());
         return EXIT_CODE_USAGE;
     }
+    if (opt->falloff)
+        a->scene.falloff = strcmp(opt->falloff, "windowed") == 0 ? SHADER_FALLOFF_WINDOWED : SHADER_FALLOFF_HARD;
     if (opt->lights >= 0 && !light_generate(&a->scene, opt->lights, opt->seed)) {
         scene_destroy(&a->scene);
         return EXIT_CODE_RUNTIME;

@@ -81,6 +81,8 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --minimise-cycle N       window: after the first frame, minimise and restore N times;\n"
             "                           fail if a frame was drawn while minimised or GL objects leaked\n"
             "                           (exit 77 when nothing can minimise it: no window manager)\n"
+            "  --falloff hard|windowed  how lights fade to their radius (default: the scene's, else hard):\n"
+            "                           windowed multiplies by (1 - (d/r)^4)^2, so the cut-off leaves no step\n"
             "  --gl-info                print the GL context's renderer, version and limits, then exit\n"
             "  --verbose                more log lines\n",
             desc->default_cutoff);
@@ -332,6 +334,10 @@ static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc
             return usage_error(desc, "%s needs a file name", paths[k].name);
         *(const char **)(void *)((char *)out + paths[k].offset) = v;
         return EXIT_CODE_OK;
+    }
+    if (is_option(a, "--falloff")) {
+        static const char *const falloffs[] = {"hard", "windowed", NULL};
+        return parse_choice(desc, "falloff", option_value(argc, argv, i, "--falloff"), falloffs, &out->falloff);
     }
     if (is_option(a, "--renderer")) {
         if (!desc->renderers)

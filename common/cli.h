@@ -59,6 +59,7 @@ typedef struct cli_options {
     uint32_t seed;
     float time;
     double cutoff;
+    const char *falloff;  /* "hard" or "windowed"; NULL: the scene's (directive `falloff`) */
     bool bench;
     bool paused;          /* window: start with the animation stopped at --time */
     bool gl_debug;        /* KHR_debug on; a GL error fails the run */

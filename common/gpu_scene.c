@@ -190,6 +190,7 @@ void gpu_scene_bind_lights(const gpu_scene *gs, GLuint program, int unit)
     glUniform1i(glGetUniformLocation(program, "u_lights"), unit);
     glUniform1i(glGetUniformLocation(program, "u_light_count"), gs->light_count);
     glUniform3fv(glGetUniformLocation(program, "u_ambient"), 1, gs->src->ambient);
+    glUniform1i(glGetUniformLocation(program, "u_falloff"), gs->src->falloff);
     glActiveTexture(GL_TEXTURE0);
 }
 

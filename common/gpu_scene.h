@@ -7,7 +7,8 @@
  *                                    positions at `time`, light radii for `cutoff`; lights that
  *                                    never reach the cut-off are culled here (radius 0)
  *   gpu_scene_bind_lights(gs, program, unit)
- *                                    u_lights (texture buffer on `unit`), u_light_count, u_ambient
+ *                                    u_lights (texture buffer on `unit`), u_light_count, u_ambient,
+ *                                    u_falloff (the scene's falloff model)
  *   gpu_scene_bind_objects(gs, program, unit)
  *                                    u_objects (texture buffer on `unit`) and u_view_proj
  *   gpu_scene_draw(gs, program)      every object: one instanced draw per batch of consecutive

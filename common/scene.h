@@ -14,6 +14,8 @@
 #ifndef COMMON_SCENE_H
 #define COMMON_SCENE_H
 
+#include "shader_layout.h"
+
 #include <stdbool.h>
 
 #include <cglm/cglm.h>
@@ -78,6 +80,7 @@ typedef struct scene {
     char path[SCENE_PATH_MAX]; /* as given to scene_load, or the name given to scene_parse_string */
     scene_camera camera;
     vec3 ambient;
+    int falloff; /* SHADER_FALLOFF_HARD (default) or SHADER_FALLOFF_WINDOWED (directive `falloff`) */
     scene_mesh *meshes;
     int mesh_count;
     scene_material *materials;

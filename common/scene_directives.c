@@ -393,6 +393,27 @@ static bool parse_key(parser *p)
     return true;
 }
 
+/* falloff hard|windowed: how every light fades to its radius (docs/05_attenuation_radius.md). */
+static bool parse_falloff(parser *p)
+{
+    if (p->falloff_line)
+        return scene_parser_fail(p, "falloff: given twice (first on line %d)", p->falloff_line);
+    if (scene_parser_at_end(p))
+        return scene_parser_fail(p, "falloff: expected hard or windowed");
+    const char *kind = p->tok[p->pos++];
+    if (strcmp(kind, "hard") == 0)
+        p->s.falloff = SHADER_FALLOFF_HARD;
+    else if (strcmp(kind, "windowed") == 0)
+        p->s.falloff = SHADER_FALLOFF_WINDOWED;
+    else
+        return scene_parser_fail(p, "falloff: unknown kind '%s' (expected hard or windowed)",
+                                 scene_parser_show_token(kind).text);
+    if (!scene_parser_expect_end(p, "falloff"))
+        return false;
+    p->falloff_line = p->line;
+    return true;
+}
+
 /* ---- dispatch ---------------------------------------------------------------------------- */
 
 static const struct {
@@ -401,6 +422,7 @@ static const struct {
 } DIRECTIVES[] = {
     {"camera", parse_camera}, {"ambient", parse_ambient}, {"material", parse_material}, {"mesh", parse_mesh},
     {"object", parse_object}, {"light", parse_light},     {"key", parse_key},
+    {"falloff", parse_falloff},
 };
 
 /* The line's first token names the directive; its function reads the rest of the line. */

@@ -74,7 +74,7 @@ typedef struct parser {
     scene s;
     int mesh_cap, material_cap, object_cap, light_cap;
     name_table mesh_names, material_names;
-    int camera_line, ambient_line; /* 0 until given */
+    int camera_line, ambient_line, falloff_line; /* 0 until given */
     last_kind last;                /* what a "key" line attaches to */
     int last_key_cap;              /* capacity of that object's or light's key array */
 } parser;

@@ -29,6 +29,8 @@
     X(TONEMAP_NONE, 0)                                                                                     \
     X(TONEMAP_EXPOSURE, 1)                                                                                 \
     X(TONEMAP_REINHARD, 2)                                                                                 \
+    X(FALLOFF_HARD, 0)     /* 1 / (kc + kl d + kq d^2), cut to 0 at the radius */                           \
+    X(FALLOFF_WINDOWED, 1) /* the same times (1 - (d / r)^4)^2: zero, with zero slope, at the radius */     \
     X(UNIT_LIGHTS, 0)                                                                                      \
     X(UNIT_LIGHT_LIST, 1)                                                                                  \
     X(UNIT_OBJECTS, 2)                                                                                     \

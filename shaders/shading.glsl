@@ -4,6 +4,7 @@
 uniform samplerBuffer u_lights; // SHADER_LIGHT_TEXELS RGBA32F texels per light (common/shader_layout.h)
 uniform int u_light_count;
 uniform vec3 u_ambient;
+uniform int u_falloff; // SHADER_FALLOFF_HARD or SHADER_FALLOFF_WINDOWED
 
 struct light_data {
     vec3 position;
@@ -43,6 +44,13 @@ vec3 shade_light(light_data L, vec3 p, vec3 n, vec3 v, vec3 albedo, float specul
         return vec3(0.0);
     vec3 h = safe_normalize(l + v, n);
     float f = 1.0 / (L.attenuation.x + (L.attenuation.y + L.attenuation.z * d) * d);
+    // Windowed: (1 - (d/r)^4)^2 takes the light to zero, with zero slope, at its radius, so the
+    // cut-off leaves no step (an infinite radius gives x = 0: no window).
+    if (u_falloff == SHADER_FALLOFF_WINDOWED) {
+        float x = d / L.radius;
+        float w = clamp(1.0 - (x * x) * (x * x), 0.0, 1.0);
+        f *= w * w;
+    }
     return f * L.radiance * (ndl * albedo + specular * pow(max(dot(n, h), 0.0), shininess));
 }
 
