@@ -96,6 +96,8 @@ bool deferred_volumes_render(deferred_volumes *dv, const gbuffer *g, const gpu_s
 
     /* 2. every light's volume, added on top */
     light_volumes_bind(&dv->lv, g, gs, f->view);
+    if (f->windowed)
+        glUniform1i(glGetUniformLocation(dv->lv.program, "u_falloff"), SHADER_FALLOFF_WINDOWED);
     gl_samples_begin(dv->query, f->count_pixels);
     light_volumes_draw(&dv->lv, gs, f->volume_state);
     dv->shaded_pixels = gl_samples_end(dv->query, f->count_pixels);

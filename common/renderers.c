@@ -10,6 +10,8 @@ const renderer_info renderer_table[RENDERER_COUNT] = {
     [RENDERER_FORWARD_LISTS] = {"forward-lists", "00", "per-object light lists only", true, {false, true}},
     [RENDERER_DEFERRED_FULLSCREEN] = {"deferred-fullscreen", "03", "one full-screen pass, all lights per pixel"},
     [RENDERER_DEFERRED_VOLUMES] = {"deferred-volumes", "07", "depth-tested back faces of one sphere per light"},
+    [RENDERER_DEFERRED_VOLUMES_WINDOWED] = {"deferred-volumes-windowed", "07",
+                                            "deferred-volumes with the windowed falloff: no cut-off step"},
 };
 
 /* chapters/07_face_culling.c's volume state: added up, back faces behind the surface. */
@@ -90,8 +92,10 @@ bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint
         res.shaded = o.count_pixels ? deferred_fullscreen_shaded_pixels(&r->fullscreen) : -1;
         res.lights_per_pixel = gs->light_count;
     } else if (ok) {
-        const deferred_volumes_frame f = {
-            .volume_state = &renderer_volume_pass, .accum_format = GL_RGBA16F, .count_pixels = o.count_pixels};
+        const deferred_volumes_frame f = {.volume_state = &renderer_volume_pass,
+                                          .accum_format = GL_RGBA16F,
+                                          .count_pixels = o.count_pixels,
+                                          .windowed = id == RENDERER_DEFERRED_VOLUMES_WINDOWED};
         ok = gbuffer_render(&r->g, gs) && deferred_volumes_render(&r->volumes, &r->g, gs, target, &f);
         res.shaded = deferred_volumes_shaded_pixels(&r->volumes);
         res.lights_per_pixel = 1.0; /* one fragment per (pixel, light) */

@@ -29,6 +29,7 @@ typedef enum renderer_id {
     RENDERER_FORWARD_LISTS,   /* light lists only */
     RENDERER_DEFERRED_FULLSCREEN, /* chapter 03: one full-screen pass, every light per pixel */
     RENDERER_DEFERRED_VOLUMES,    /* chapter 07: one depth-tested volume per light, added up */
+    RENDERER_DEFERRED_VOLUMES_WINDOWED, /* the same with the windowed falloff (chapter 05's page) */
     RENDERER_COUNT
 } renderer_id;
 

@@ -113,7 +113,7 @@ bool bench_read_linear(bench_renderers *br, int r, const gpu_scene *gs, float *r
     const fbo *src = &br->linear_target;
     if (r == RENDERER_DEFERRED_FULLSCREEN)
         return false; /* display-encodes in its only shader */
-    if (r == RENDERER_DEFERRED_VOLUMES)
+    if (r == RENDERER_DEFERRED_VOLUMES || r == RENDERER_DEFERRED_VOLUMES_WINDOWED)
         src = renderers_accum(&br->set); /* the RGBA16F sum of the last frame, before present */
     else if (!renderers_draw(&br->set, (renderer_id)r, gs, src->id, (renderer_draw_options){.linear_output = true},
                              NULL))
