@@ -2,184 +2,229 @@
 set terminal pngcairo size 1500,900 font ',10'
 set datafile missing 'NA'
 $t_0_0 << EOD
-1 8.0330 1
-4 13.3147 1
-16 37.0772 1
-64 126.3868 1
-256 488.8037 1
-1024 1938.4714 0
-4096 7737.1422 0
+1 8.4515 1
+4 13.7263 1
+16 36.4175 1
+64 127.5645 1
+256 492.1542 1
+1024 1950.5131 0
+4096 7783.9486 0
 EOD
 $t_0_1 << EOD
-1 8.2358 1
-4 13.0786 1
-16 32.1109 1
-64 90.7998 1
-256 325.8412 1
-1024 1240.6993 1
-4096 4900.1314 0
+1 8.7266 1
+4 13.3361 1
+16 30.2579 1
+64 90.2598 1
+256 330.5667 1
+1024 1262.2508 1
+4096 4988.9874 0
 EOD
 $t_0_2 << EOD
-1 18.0766 1
-4 21.9311 1
-16 43.2745 1
-64 107.2819 1
-256 363.5113 1
-1024 1388.6270 1
-4096 5489.0896 0
+1 18.6975 1
+4 22.3400 1
+16 39.2839 1
+64 107.2043 1
+256 380.8037 1
+1024 1456.5367 1
+4096 5759.4688 0
 EOD
 $t_0_3 << EOD
-1 19.4985 1
-4 35.6474 1
-16 57.7690 1
-64 55.8418 1
-256 53.6797 1
-1024 65.0727 1
-4096 146.3361 1
+1 20.7353 1
+4 36.9199 1
+16 51.0913 1
+64 48.5807 1
+256 46.0200 1
+1024 56.5736 1
+4096 114.7515 1
+EOD
+$t_0_4 << EOD
+1 20.1512 1
+4 36.5343 1
+16 50.9319 1
+64 48.5501 1
+256 45.7463 1
+1024 56.9449 1
+4096 115.3566 1
 EOD
 $t_1_0 << EOD
-1 33.5449 1
-4 50.0249 1
-16 126.7870 1
-64 433.8228 1
-256 1661.9661 0
-1024 6574.5391 0
-4096 26224.8313 0
+1 34.4975 1
+4 51.4234 1
+16 130.2676 1
+64 444.4847 1
+256 1701.3529 0
+1024 6728.8258 0
+4096 26838.7174 0
 EOD
 $t_1_1 << EOD
-1 31.9520 1
-4 39.3402 1
-16 56.0177 1
-64 99.6067 1
-256 271.4588 1
-1024 956.8882 1
-4096 3698.6059 0
+1 29.7771 1
+4 39.9885 1
+16 57.2269 1
+64 106.6678 1
+256 278.7475 1
+1024 970.3427 1
+4096 3736.7233 0
 EOD
 $t_1_2 << EOD
-1 40.7802 1
-4 46.1377 1
-16 68.3056 1
-64 148.1634 1
-256 492.8604 1
-1024 1871.6483 0
-4096 7386.7997 0
+1 41.1869 1
+4 46.6878 1
+16 69.8668 1
+64 159.4670 1
+256 516.3923 1
+1024 1944.0935 0
+4096 7654.8983 0
 EOD
 $t_1_3 << EOD
-1 46.0574 1
-4 66.9566 1
-16 86.2932 1
-64 87.0761 1
-256 81.5252 1
-1024 85.8233 1
-4096 122.6467 1
+1 46.5884 1
+4 68.0999 1
+16 88.5216 1
+64 98.2416 1
+256 83.4563 1
+1024 89.0043 1
+4096 135.7692 1
+EOD
+$t_1_4 << EOD
+1 48.1776 1
+4 68.0444 1
+16 88.2065 1
+64 97.1674 1
+256 83.4429 1
+1024 89.0285 1
+4096 134.9188 1
 EOD
 $t_2_0 << EOD
-1 63.4827 1
-4 81.2386 1
-16 157.1794 1
-64 456.0019 1
-256 1651.2920 0
-1024 6432.4524 0
-4096 25557.0939 0
+1 76.9989 1
+4 82.5351 1
+16 166.4725 1
+64 467.1266 1
+256 1669.7428 0
+1024 6480.2077 0
+4096 25722.0675 0
 EOD
 $t_2_1 << EOD
-1 89.8876 1
-4 103.6164 1
-16 105.1050 1
-64 114.6815 1
-256 123.9573 1
-1024 155.9465 1
-4096 354.6722 1
+1 102.6023 1
+4 107.5498 1
+16 113.0290 1
+64 116.7616 1
+256 125.6705 1
+1024 156.4571 1
+4096 369.4460 1
 EOD
 $t_2_2 << EOD
-1 67.5737 1
-4 74.3482 1
-16 80.7618 1
-64 117.5783 1
-256 264.5184 1
-1024 863.7183 1
-4096 3260.5178 0
+1 77.7733 1
+4 71.5463 1
+16 87.2179 1
+64 124.3632 1
+256 277.9962 1
+1024 901.1703 1
+4096 3393.8666 0
 EOD
 $t_2_3 << EOD
-1 68.6473 1
-4 80.5811 1
-16 84.8934 1
-64 86.2345 1
-256 90.0760 1
-1024 109.6149 1
-4096 229.3143 1
+1 78.4715 1
+4 81.9090 1
+16 92.1794 1
+64 89.6815 1
+256 92.7641 1
+1024 108.4621 1
+4096 247.2404 1
+EOD
+$t_2_4 << EOD
+1 81.9378 1
+4 78.8555 1
+16 90.5416 1
+64 88.2646 1
+256 92.5959 1
+1024 109.7412 1
+4096 250.9847 1
 EOD
 $t_3_0 << EOD
-1 8.1557 1
-4 12.9685 1
-16 32.2162 1
-64 109.7187 1
-256 426.3994 1
-1024 1693.1223 0
-4096 6760.0140 0
+1 9.4326 1
+4 14.3308 1
+16 33.0021 1
+64 112.4749 1
+256 426.4344 1
+1024 1682.2723 0
+4096 6705.6238 0
 EOD
 $t_3_1 << EOD
-1 10.1070 1
-4 14.9756 1
-16 32.8775 1
-64 72.1403 1
-256 193.0655 1
-1024 683.5080 1
-4096 2645.2781 0
+1 13.8058 1
+4 18.5332 1
+16 33.5835 1
+64 72.9332 1
+256 192.3326 1
+1024 708.6859 1
+4096 2774.0992 0
 EOD
 $t_3_2 << EOD
-1 17.7947 1
-4 21.0497 1
-16 29.6291 1
-64 67.9232 1
-256 220.5608 1
-1024 810.5302 1
-4096 3170.4076 0
+1 23.1912 1
+4 25.3355 1
+16 31.2227 1
+64 70.0205 1
+256 225.0296 1
+1024 859.2501 1
+4096 3396.1318 0
 EOD
 $t_3_3 << EOD
-1 17.5611 1
-4 28.4800 1
-16 29.2448 1
-64 33.5977 1
-256 45.8699 1
-1024 138.2663 1
-4096 528.8641 1
+1 24.9243 1
+4 33.5376 1
+16 30.5146 1
+64 35.1216 1
+256 46.5615 1
+1024 144.6106 1
+4096 542.6366 1
+EOD
+$t_3_4 << EOD
+1 24.7796 1
+4 32.1363 1
+16 30.4394 1
+64 34.9519 1
+256 46.6232 1
+1024 143.2051 1
+4096 538.2435 1
 EOD
 $t_4_0 << EOD
-1 37.3792 1
-4 51.0701 1
-16 112.0425 1
-64 338.7571 1
-256 1237.5476 1
-1024 4832.7096 0
-4096 19213.3578 0
+1 37.2919 1
+4 52.2710 1
+16 108.5126 1
+64 338.1050 1
+256 1255.5891 1
+1024 4925.5255 0
+4096 19605.2711 0
 EOD
 $t_4_1 << EOD
-1 51.5919 1
-4 64.7262 1
-16 103.5422 1
-64 205.1513 1
-256 619.3943 1
-1024 2276.3662 0
-4096 8904.2539 0
+1 54.6840 1
+4 64.8857 1
+16 99.3826 1
+64 205.2751 1
+256 614.3676 1
+1024 2250.7376 0
+4096 8796.2174 0
 EOD
 $t_4_2 << EOD
-1 44.2701 1
-4 52.1144 1
-16 80.9770 1
-64 186.4385 1
-256 613.3399 1
-1024 2320.9453 0
-4096 9151.3668 0
+1 44.6940 1
+4 51.2414 1
+16 80.0737 1
+64 190.2870 1
+256 631.2923 1
+1024 2395.3135 0
+4096 9451.3984 0
 EOD
 $t_4_3 << EOD
-1 48.3954 1
-4 74.2344 1
-16 120.7169 1
-64 122.0576 1
-256 123.7396 1
-1024 119.0955 1
-4096 101.5337 1
+1 49.1894 1
+4 76.0734 1
+16 113.4404 1
+64 125.3306 1
+256 124.9326 1
+1024 110.5668 1
+4096 101.5532 1
+EOD
+$t_4_4 << EOD
+1 49.6802 1
+4 79.1353 1
+16 113.9605 1
+64 126.0882 1
+256 126.0905 1
+1024 109.3464 1
+4096 101.5979 1
 EOD
 set output 'docs/data/bench/time_vs_lights.png.tmp'
 set multiplot layout 2,3 title 'Median ms per frame against light count, 800x800, llvmpipe (LLVM 15.0.6, 256 bits) (log-log; open marks: extrapolated)'
@@ -192,56 +237,70 @@ set title 'default'
 plot $t_0_0 using 1:2 with lines lc 1 title 'forward-naive', $t_0_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_0_1 using 1:2 with lines lc 2 title 'forward', $t_0_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
      $t_0_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_0_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_0_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_0_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle
+     $t_0_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_0_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_0_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_0_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
 set title 'city'
 plot $t_1_0 using 1:2 with lines lc 1 title 'forward-naive', $t_1_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_1_1 using 1:2 with lines lc 2 title 'forward', $t_1_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
      $t_1_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_1_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_1_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_1_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle
+     $t_1_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_1_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_1_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_1_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
 set title 'bunnies'
 plot $t_2_0 using 1:2 with lines lc 1 title 'forward-naive', $t_2_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_2_1 using 1:2 with lines lc 2 title 'forward', $t_2_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
      $t_2_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_2_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_2_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_2_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle
+     $t_2_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_2_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_2_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_2_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
 set title 'sphere'
 plot $t_3_0 using 1:2 with lines lc 1 title 'forward-naive', $t_3_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_3_1 using 1:2 with lines lc 2 title 'forward', $t_3_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
      $t_3_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_3_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_3_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_3_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle
+     $t_3_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_3_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_3_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_3_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
 set title 'teapots'
 plot $t_4_0 using 1:2 with lines lc 1 title 'forward-naive', $t_4_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_4_1 using 1:2 with lines lc 2 title 'forward', $t_4_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
      $t_4_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_4_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_4_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_4_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle
+     $t_4_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_4_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_4_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_4_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
 unset multiplot
 $e_0 << EOD
 EOD
 $e_1 << EOD
-7.22861 364.4855 0.0144153 0.5
-11.4784 345.9282 0.021697 1
-14.9631 333.4747 0.0270504 2
-18.982 325.2806 0.0324618 5
-21.3178 323.9957 0.035426 10
-23.4325 318.4077 0.0381214 20
-23.9771 319.1927 0.0388776 32
+7.22861 373.0676 0.0144153 0.5
+11.4784 348.5643 0.021697 1
+14.9631 338.8010 0.0270504 2
+18.982 333.3817 0.0324618 5
+21.3178 330.5534 0.035426 10
+23.4325 325.6685 0.0381214 20
+23.9771 322.6852 0.0388776 32
 EOD
 $e_2 << EOD
-7.29054 363.1115 nan 0.5
-11.536 364.2301 nan 1
-15.0156 362.7399 nan 2
-19.0187 358.4829 nan 5
-21.3276 359.7748 nan 10
-23.4215 359.9130 nan 20
-23.9613 365.5799 nan 32
+7.29054 381.7538 nan 0.5
+11.536 374.9914 nan 1
+15.0156 376.2949 nan 2
+19.0187 379.9540 nan 5
+21.3276 384.0683 nan 10
+23.4215 379.5452 nan 20
+23.9613 381.0966 nan 32
 EOD
 $e_3 << EOD
-7.50485 415.5367 0.0149456 0.5
-11.6169 202.7643 0.0219389 1
-15.0473 105.2379 0.0271878 2
-19.0284 45.5134 0.0325462 5
-21.3312 30.2902 0.0354934 10
-23.4224 22.5168 0.0381772 20
-23.9618 25.9971 0.0389306 32
+7.50485 415.7743 0.0149456 0.5
+11.6169 198.5301 0.0219389 1
+15.0473 108.6430 0.0271878 2
+19.0284 54.3091 0.0325462 5
+21.3312 37.6043 0.0354934 10
+23.4224 29.2403 0.0381772 20
+23.9618 25.9359 0.0389306 32
+EOD
+$e_4 << EOD
+11.6713 421.2602 0.0220646 0.5
+15.1065 198.5889 0.0273168 1
+18.1095 108.0345 0.0314616 2
+21.2181 54.3806 0.0354799 5
+22.9628 37.8923 0.0377166 10
+23.9984 28.9697 0.0390677 20
+24.2996 26.2267 0.0394998 32
 EOD
 set output 'docs/data/bench/speed_vs_error.png.tmp'
 unset logscale
@@ -254,10 +313,12 @@ set title '8-bit display error'
 set xlabel 'mean |error| in 8-bit levels'
 plot $e_1 using 1:2 with linespoints lc 2 pt 7 title 'forward', $e_1 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 2 notitle, \
      $e_2 using 1:2 with linespoints lc 3 pt 7 title 'deferred-fullscreen', $e_2 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 3 notitle, \
-     $e_3 using 1:2 with linespoints lc 4 pt 7 title 'deferred-volumes', $e_3 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle
+     $e_3 using 1:2 with linespoints lc 4 pt 7 title 'deferred-volumes', $e_3 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle, \
+     $e_4 using 1:2 with linespoints lc 5 pt 7 title 'deferred-volumes-windowed', $e_4 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 5 notitle
 set title 'linear HDR error (renderers with a linear output)'
 set xlabel 'mean |error| of linear radiance'
 plot $e_1 using 3:2 with linespoints lc 2 pt 7 title 'forward', $e_1 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 2 notitle, \
      $e_2 using 3:2 with linespoints lc 3 pt 7 title 'deferred-fullscreen', $e_2 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 3 notitle, \
-     $e_3 using 3:2 with linespoints lc 4 pt 7 title 'deferred-volumes', $e_3 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle
+     $e_3 using 3:2 with linespoints lc 4 pt 7 title 'deferred-volumes', $e_3 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle, \
+     $e_4 using 3:2 with linespoints lc 5 pt 7 title 'deferred-volumes-windowed', $e_4 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 5 notitle
 unset multiplot
