@@ -4,7 +4,8 @@
  *                               can be trusted; on a software rasteriser (llvmpipe, whose timer
  *                               queries measure a fraction of the work) the CPU's monotonic clock
  *                               with glFinish() at every pass boundary. $COURSE_FRAME_CLOCK=cpu
- *                               forces the second.
+ *                               forces the second, =gpu the first (the tests exercise the query
+ *                               path that way; llvmpipe's figures from it mean nothing).
  *   frame_timer_destroy(t)
  *   frame_timer_begin(t)        a frame starts; it becomes the timer frame_timer_mark() reports to
  *   frame_timer_mark(name)      the pass `name` starts and the one before it ends (no-op when no

@@ -33,3 +33,10 @@ if(XVFB_RUN AND TARGET 07_face_culling)
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(window.timing_matches_bench PROPERTIES LABELS window SKIP_RETURN_CODE 77 RUN_SERIAL TRUE)
 endif()
+
+# Both frame clocks run here (the GPU query path is forced; tests/run_frame_clock.sh).
+if(TARGET 07_face_culling)
+  add_test(NAME robust.frame_clocks COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_frame_clock.sh
+           $<TARGET_FILE:07_face_culling> WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(robust.frame_clocks PROPERTIES LABELS robust SKIP_RETURN_CODE 77)
+endif()
