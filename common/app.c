@@ -289,6 +289,44 @@ static int run_loop(app *a, loop *l)
     return rc;
 }
 
+/* True when `word` is one of the whitespace-separated tokens of `text`. */
+static bool has_token(const char *text, const char *word)
+{
+    size_t n = strlen(word);
+    for (const char *p = strstr(text, word); p; p = strstr(p + 1, word))
+        if ((p == text || p[-1] == ' ' || p[-1] == '\t') && (p[n] == '\0' || p[n] == ' ' || p[n] == '\t'))
+            return true;
+    return false;
+}
+
+/* --camera: a camera line made of the given attributes and the scene's for the others, checked by
+ * the scene parser exactly as a scene file's camera line is. */
+static bool apply_camera(scene *s, const char *given)
+{
+    const scene_camera *c = &s->camera;
+    char line[1024];
+    int n = snprintf(line, sizeof line, "camera %s", given);
+    const struct {
+        const char *name;
+        int count;
+        const float *v;
+    } attrs[] = {{"eye", 3, c->eye},         {"target", 3, c->target},        {"up", 3, c->up},
+                 {"fovy", 1, &c->fovy_deg}, {"near", 1, &c->near_plane}, {"far", 1, &c->far_plane}};
+    for (size_t k = 0; k < sizeof attrs / sizeof attrs[0] && n > 0 && n < (int)sizeof line - 64; k++) {
+        if (has_token(given, attrs[k].name))
+            continue;
+        n += snprintf(line + n, sizeof line - (size_t)n, " %s", attrs[k].name);
+        for (int j = 0; j < attrs[k].count; j++) /* %.9g: a float survives the text exactly */
+            n += snprintf(line + n, sizeof line - (size_t)n, " %.9g", (double)attrs[k].v[j]);
+    }
+    scene tmp;
+    if (n <= 0 || n >= (int)sizeof line || !scene_parse_string(line, "--camera", "", &tmp))
+        return false;
+    s->camera = tmp.camera;
+    scene_destroy(&tmp);
+    return true;
+}
+
 /* Scene and context; on failure everything made so far is released. */
 static int app_open(app *a, const app_desc *desc, const cli_options *opt)
 {
@@ -298,6 +336,10 @@ static int app_open(app *a, const app_desc *desc, const cli_options *opt)
             log_error("the default scene is looked for in the data folder %s (from %s): give --scene, "
                       "--data-dir or COURSE_DATA_DIR",
                       data_dir(), data_dir_origin());
+        return EXIT_CODE_USAGE;
+    }
+    if (opt->camera && !apply_camera(&a->scene, opt->camera)) {
+        scene_destroy(&a->scene);
         return EXIT_CODE_USAGE;
     }
     if (opt->falloff)

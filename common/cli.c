@@ -81,6 +81,8 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --minimise-cycle N       window: after the first frame, minimise and restore N times;\n"
             "                           fail if a frame was drawn while minimised or GL objects leaked\n"
             "                           (exit 77 when nothing can minimise it: no window manager)\n"
+            "  --camera \"POSE\"          the scene's camera with these attributes replaced, as in a\n"
+            "                           scene's camera line: \"eye X Y Z target X Y Z [up X Y Z] [fovy F]\"\n"
             "  --falloff hard|windowed  how lights fade to their radius (default: the scene's, else hard):\n"
             "                           windowed multiplies by (1 - (d/r)^4)^2, so the cut-off leaves no step\n"
             "  --gl-info                print the GL context's renderer, version and limits, then exit\n"
@@ -333,6 +335,11 @@ static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc
         if (!(v = option_value(argc, argv, i, paths[k].name)) || !*v)
             return usage_error(desc, "%s needs a file name", paths[k].name);
         *(const char **)(void *)((char *)out + paths[k].offset) = v;
+        return EXIT_CODE_OK;
+    }
+    if (is_option(a, "--camera")) {
+        if (!(out->camera = option_value(argc, argv, i, "--camera")) || !*out->camera)
+            return usage_error(desc, "%s needs a pose, e.g. \"eye 0 2 6 target 0 0 0\"", "--camera");
         return EXIT_CODE_OK;
     }
     if (is_option(a, "--falloff")) {

@@ -60,6 +60,7 @@ typedef struct cli_options {
     float time;
     double cutoff;
     const char *falloff;  /* "hard" or "windowed"; NULL: the scene's (directive `falloff`) */
+    const char *camera;   /* "eye X Y Z target X Y Z ...": replaces those of the scene's camera */
     bool bench;
     bool paused;          /* window: start with the animation stopped at --time */
     bool gl_debug;        /* KHR_debug on; a GL error fails the run */

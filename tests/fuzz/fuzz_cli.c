@@ -66,7 +66,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             abort();
         /* Every string the options point at must be readable. */
         size_t total = strlen(o.renderer) + strlen(o.view);
-        const char *paths[] = {o.scene_path, o.screenshot, o.data_dir};
+        const char *paths[] = {o.scene_path, o.screenshot, o.data_dir, o.camera, o.falloff};
         for (size_t i = 0; i < sizeof paths / sizeof paths[0]; i++)
             total += paths[i] ? strlen(paths[i]) : 0;
         const char *label = cli_extra_value(&DESC, &o, "label");
