@@ -30,7 +30,6 @@ static const cli_desc cli = {
     .program = "00_forward",
     .summary = "Chapter 00: forward rendering, the baseline every deferred chapter is compared with.",
     .renderers = renderers,
-    .keys = "  R        next renderer (forward, naive, pre-pass only, light lists only)\n",
 };
 
 /* Every pass draws the scene with GL_LEQUAL, so on an exact depth tie the object drawn last wins,

@@ -20,7 +20,6 @@ static const cli_desc cli = {
     .program = "01_fbo_setup",
     .summary = "Chapter 01: render into an offscreen framebuffer, then present it.",
     .renderers = renderers,
-    .keys = "  R        switch offscreen / forward (straight into the target)\n",
 };
 
 static struct {

@@ -24,8 +24,6 @@ static const cli_desc cli = {
     .summary = "Chapter 02: a geometry pass writes the G-buffer through multiple render targets.",
     .renderers = renderers,
     .views = views,
-    .keys = "  V        next view: albedo, normal, depth, specular, final\n"
-            "  R        switch deferred / forward\n",
 };
 
 static struct {

@@ -28,6 +28,7 @@
 #include "log.h"
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
+/* lit: the lighting pass; reach: the share of its light loop that does any work (key V). */
 static const char *const views[] = {"lit", "reach", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
@@ -36,8 +37,6 @@ static const cli_desc cli = {
     .summary = "Chapter 03: deferred shading with a full-screen lighting pass over all lights.",
     .renderers = renderers,
     .views = views,
-    .keys = "  R        switch deferred / forward (the pictures must agree)\n"
-            "  V        view: lit, or reach (the fraction of the light loop that does work)\n",
 };
 
 static struct {

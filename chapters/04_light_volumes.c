@@ -39,8 +39,6 @@ static const cli_desc cli = {
     .summary =
         "Chapter 04: one instanced sphere per light; only the pixels it covers are shaded.",
     .renderers = renderers,
-    .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-            "  S        scale the volume mesh by 1 / inradius, or not\n",
     .extras =
         {
             {"radius", "R", "radius of every light volume (chapter 05 solves one per light)",

@@ -38,8 +38,6 @@ static const cli_desc cli = {
         "Chapter 05: each light volume's radius solved from its attenuation and the cut-off.",
     .renderers = renderers,
     .views = views,
-    .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-            "  V        view: lit, or lit + the cut-off ring of every light\n",
 };
 
 /* The volumes' fixed-function state, as in chapter 04: back faces only, no blending, no depth test. */

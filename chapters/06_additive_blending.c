@@ -41,10 +41,6 @@ static const cli_desc cli = {
     .summary = "Chapter 06: lights summed with additive blending in a float buffer, then "
                "tone mapped once.",
     .renderers = renderers,
-    .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-            "  A        accumulation buffer: rgba16f, rgba8 (saturates), rgba32f\n"
-            "  T        tone map: none, exposure, reinhard\n"
-            "  - =      halve / double the exposure\n",
     .extras =
         {
             {"accum", "FORMAT", "accumulation buffer format", accum_names, "rgba16f"},

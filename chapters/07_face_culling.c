@@ -40,10 +40,6 @@ static const cli_desc cli = {
     .summary = "Chapter 07: back faces of the light volumes, depth-tested against the scene.",
     .renderers = renderers,
     .views = views,
-    .keys = "  R        switch renderer (deferred light volumes, forward)\n"
-            "  V        view: lit, or overdraw (lighting fragments per pixel)\n"
-            "  C        cull front faces (right), back faces, or none (both wrong)\n"
-            "  D        depth clamp on / off\n",
     .extras =
         {
             {"cull", "FACES", "faces culled: front is right; back and none show bugs", culls,

@@ -154,28 +154,31 @@ static void next_choice(const char *const *choices, int *index, const char *what
     log_info("%s: %s", what, choices[*index]);
 }
 
-/* Keys every chapter shares; returns false to quit. */
+static void save_numbered_screenshot(const app *a)
+{
+    char path[64];
+    mkdir("out", 0755);
+    snprintf(path, sizeof path, "out/%s-%ld.png", a->cli->program, a->frame_index);
+    save_screenshot(a, path);
+}
+
+/* One key, as common/keys.c's table says; returns false to quit. */
 static bool handle_key(app *a, const app_desc *desc, int key, bool *paused)
 {
-    if (desc->key && desc->key(a, key))
-        return true;
-    switch (key) {
-    case PLATFORM_KEY_ESCAPE:
-    case 'Q': return false;
-    case 'R': next_choice(a->cli->renderers, &a->renderer, "renderer"); break;
-    case 'V': next_choice(a->cli->views, &a->view, "view"); break;
-    case PLATFORM_KEY_SPACE: *paused = !*paused; break;
-    case '[': a->cutoff = a->cutoff > 0 ? a->cutoff / 2 : LIGHT_DEFAULT_CUTOFF; break;
-    case ']': a->cutoff = a->cutoff > 0 ? a->cutoff * 2 : LIGHT_DEFAULT_CUTOFF; break;
-    case '0': a->cutoff = a->cutoff > 0 ? 0 : LIGHT_DEFAULT_CUTOFF; break;
-    case 'P': {
-        char path[64];
-        mkdir("out", 0755);
-        snprintf(path, sizeof path, "out/%s-%ld.png", a->cli->program, a->frame_index);
-        save_screenshot(a, path);
+    const key_binding *b = keys_find(key, a->cli->program);
+    switch (b ? b->action : KEY_ACTION_CHAPTER) {
+    case KEY_ACTION_CHAPTER:
+        if (b && desc->key)
+            desc->key(a, key);
         break;
-    }
-    default: break;
+    case KEY_ACTION_QUIT: return false;
+    case KEY_ACTION_RENDERER: next_choice(a->cli->renderers, &a->renderer, "renderer"); break;
+    case KEY_ACTION_VIEW: next_choice(a->cli->views, &a->view, "view"); break;
+    case KEY_ACTION_PAUSE: *paused = !*paused; break;
+    case KEY_ACTION_CUTOFF_HALF: a->cutoff = a->cutoff > 0 ? a->cutoff / 2 : LIGHT_DEFAULT_CUTOFF; break;
+    case KEY_ACTION_CUTOFF_DOUBLE: a->cutoff = a->cutoff > 0 ? a->cutoff * 2 : LIGHT_DEFAULT_CUTOFF; break;
+    case KEY_ACTION_CUTOFF_EXACT: a->cutoff = a->cutoff > 0 ? 0 : LIGHT_DEFAULT_CUTOFF; break;
+    case KEY_ACTION_SCREENSHOT: save_numbered_screenshot(a); break;
     }
     return true;
 }

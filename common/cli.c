@@ -1,6 +1,7 @@
 /* cli.c - see cli.h. */
 #include "cli.h"
 
+#include "keys.h"
 #include "log.h"
 
 #include <errno.h>
@@ -88,16 +89,7 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --gl-info                print the GL context's renderer, version and limits, then exit\n"
             "  --verbose                more log lines\n",
             desc->default_cutoff);
-    /* The chapter's own keys, then the ones app.c gives every chapter. */
-    fprintf(stream, "\nwindow keys:\n%s", desc->keys ? desc->keys : "");
-    if (desc->renderers && !(desc->keys && strstr(desc->keys, "  R ")))
-        fprintf(stream, "  R        next renderer\n");
-    if (desc->views && !(desc->keys && strstr(desc->keys, "  V ")))
-        fprintf(stream, "  V        next view\n");
-    fprintf(stream, "  [ ] 0    halve / double the cut-off; 0 toggles exact (no cut-off)\n"
-                    "  Space    pause the animation\n"
-                    "  P        save a screenshot into out/\n"
-                    "  Esc, Q   quit\n");
+    keys_print_help(stream, desc->program, desc->views != NULL);
     fprintf(stream, "\nexit codes: 0 ok, 1 runtime failure, 2 usage or input error, 77 no GL context\n");
 }
 

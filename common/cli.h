@@ -39,7 +39,6 @@ typedef struct cli_desc {
     const char *summary;             /* one sentence for --help */
     const char *const *renderers;    /* NULL-terminated; the first is the default */
     const char *const *views;        /* NULL-terminated or NULL; the first is the default */
-    const char *keys;                /* window keys, one per line, for --help */
     cli_extra extras[CLI_MAX_EXTRAS];
     double default_cutoff;           /* --cutoff's default (app_run sets the lighting model's) */
 } cli_desc;

@@ -52,7 +52,7 @@ static void glfw_key(GLFWwindow *w, int key, int scancode, int action, int mods)
     (void)mods;
     if (action != GLFW_PRESS || state.key_count == KEY_QUEUE)
         return;
-    state.keys[state.key_count++] = key == GLFW_KEY_ESCAPE ? PLATFORM_KEY_ESCAPE : key;
+    state.keys[state.key_count++] = key == GLFW_KEY_ESCAPE ? KEY_ESCAPE : key;
 }
 
 static int create_glfw(const platform_desc *desc)

@@ -17,7 +17,7 @@
  *   platform_present(fbo, w, h)    copy the app's framebuffer to the window and swap
  *   platform_set_title(text)
  *   platform_set_window_size(w, h) ask for a new window size in screen units (no-op headless)
- *   platform_take_key()            next key pressed since the last call (PLATFORM_KEY_*), or 0
+ *   platform_take_key()            next key pressed since the last call (KEY_* of keys.h), or 0
  *   platform_time()                monotonic seconds
  *
  * Every chapter renders into its own framebuffer; the window only shows it.
@@ -27,19 +27,11 @@
 #define COMMON_PLATFORM_H
 
 #include "exit_code.h"
+#include "keys.h"
 
 #include <glad/gl.h>
 #include <stdbool.h>
 
-/* Letters and digits are their ASCII upper-case codes ('F', '1'). */
-enum {
-    PLATFORM_KEY_ESCAPE = 256,
-    PLATFORM_KEY_SPACE = ' ',
-    PLATFORM_KEY_UP = 265,
-    PLATFORM_KEY_DOWN = 264,
-    PLATFORM_KEY_LEFT = 263,
-    PLATFORM_KEY_RIGHT = 262,
-};
 
 typedef struct platform_desc {
     backend_kind backend;

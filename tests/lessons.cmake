@@ -9,3 +9,7 @@ set_tests_properties(lessons.first_in_chapter lessons.what_changed PROPERTIES LA
 add_test(NAME lessons.generated_figures
   COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/doc_generated.py --check ${CMAKE_SOURCE_DIR})
 set_tests_properties(lessons.generated_figures PROPERTIES LABELS unit)
+# The README's key table is common/keys.c's (tools/key_table prints it).
+add_test(NAME lessons.key_table COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_key_table.sh
+         $<TARGET_FILE:key_table> ${CMAKE_SOURCE_DIR}/README.md)
+set_tests_properties(lessons.key_table PROPERTIES LABELS unit)

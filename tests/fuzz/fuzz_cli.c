@@ -26,7 +26,6 @@ static const cli_desc DESC = {
     .summary = "command-line fuzzing target",
     .renderers = (const char *const[]){"deferred", "forward", "forward-naive", NULL},
     .views = (const char *const[]){"final", "albedo", "normal", "depth", NULL},
-    .keys = "  R  next renderer\n",
     .extras = {{.name = "mode", .metavar = "M", .help = "a choice", .choices = MODES, .default_value = "on"},
                {.name = "label", .metavar = "TEXT", .help = "free text"}},
 };
