@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # run_window_timing.sh XVFB_RUN BINARY: the frame time a window shows is the frame time --bench
 # measures (same chapter, renderer, scene and size; the animation paused), within 20 %, for the
-# deferred renderer and for forward. The window's figure is its title, logged with --verbose.
+# deferred renderer and for forward, at 640x480 (longer frames, less relative noise). The window's
+# figure is its title, logged with --verbose.
 set -u
 xvfb=$1 bin=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0
 for renderer in deferred forward; do
-  args=(--size 400x300 --paused --renderer "$renderer")
+  args=(--size 640x480 --paused --renderer "$renderer")
   "$xvfb" -a -s "-screen 0 1280x1024x24" "$bin" "${args[@]}" --frames 200 --verbose >"$tmp/win" 2>&1
   rc=$?
   if [ $rc -eq 77 ] || grep -q "cannot open display\|DISPLAY" "$tmp/win"; then echo "skip: no display"; exit 77; fi
