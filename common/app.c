@@ -90,6 +90,10 @@ static int print_gl_info(const cli_options *opt, const char *program)
            draw_buffers);
     printf("gl: renderer=%s\n", (const char *)glGetString(GL_RENDERER));
     printf("gl: version=%s\n", (const char *)glGetString(GL_VERSION));
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    printf("gl: context=%d.%d core (the newest the driver gave, asking for 4.6 down to 3.3)\n", major, minor);
     platform_destroy();
     return EXIT_CODE_OK;
 }

@@ -55,6 +55,24 @@ static void glfw_key(GLFWwindow *w, int key, int scancode, int action, int mods)
     state.keys[state.key_count++] = key == GLFW_KEY_ESCAPE ? KEY_ESCAPE : key;
 }
 
+/* Core versions asked for, newest first, and the first the driver gives is kept: asked for 3.3 a
+ * driver may return exactly 3.3 (NVIDIA does), while a feature of a later chapter can need more.
+ * 3.3 is the floor every chapter runs on. */
+static const int gl_versions[][2] = {{4, 6}, {4, 5}, {4, 3}, {4, 1}, {3, 3}};
+#define GL_VERSION_COUNT ((int)(sizeof gl_versions / sizeof gl_versions[0]))
+
+static GLFWwindow *glfw_window_newest(const platform_desc *desc)
+{
+    for (int v = 0; v < GL_VERSION_COUNT; v++) {
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, gl_versions[v][0]);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, gl_versions[v][1]);
+        GLFWwindow *w = glfwCreateWindow(desc->width, desc->height, desc->title, NULL, NULL);
+        if (w)
+            return w;
+    }
+    return NULL;
+}
+
 static int create_glfw(const platform_desc *desc)
 {
     glfwSetErrorCallback(glfw_error);
@@ -63,18 +81,16 @@ static int create_glfw(const platform_desc *desc)
                   "run with --headless");
         return EXIT_CODE_USAGE;
     }
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, desc->gl_debug ? GLFW_TRUE : GLFW_FALSE);
-    state.window = glfwCreateWindow(desc->width, desc->height, desc->title, NULL, NULL);
+    state.window = glfw_window_newest(desc);
     if (!state.window) {
         const char *why = NULL;
         glfwGetError(&why);
-        log_error("cannot create a GL 3.3 core window: %s", why ? why : "unknown reason");
+        log_error("cannot create a GL core window (3.3 or newer): %s", why ? why : "unknown reason");
         glfwTerminate();
         return EXIT_CODE_SKIP;
     }
@@ -102,12 +118,16 @@ static bool create_egl(void)
         log_debug("EGL: OpenGL API unavailable (0x%x)", eglGetError());
         return false;
     }
-    const EGLint attrs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    state.egl_context = eglCreateContext(state.egl_display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attrs);
+    for (int v = 0; v < GL_VERSION_COUNT && state.egl_context == EGL_NO_CONTEXT; v++) {
+        const EGLint attrs[] = {EGL_CONTEXT_MAJOR_VERSION,        gl_versions[v][0],
+                                EGL_CONTEXT_MINOR_VERSION,        gl_versions[v][1],
+                                EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                EGL_NONE};
+        state.egl_context = eglCreateContext(state.egl_display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attrs);
+    }
     if (state.egl_context == EGL_NO_CONTEXT ||
         !eglMakeCurrent(state.egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE, state.egl_context)) {
-        log_debug("EGL: cannot create a 3.3 core context (0x%x)", eglGetError());
+        log_debug("EGL: cannot create a core context, 3.3 or newer (0x%x)", eglGetError());
         return false;
     }
     if (!gladLoadGL((GLADloadfunc)eglGetProcAddress)) {
@@ -136,11 +156,14 @@ static void destroy_egl(void)
 
 static bool create_osmesa(void)
 {
-    const int attrs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                         OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-    state.osmesa = OSMesaCreateContextAttribs(attrs, NULL);
+    for (int v = 0; v < GL_VERSION_COUNT && !state.osmesa; v++) {
+        const int attrs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                             OSMESA_CONTEXT_MAJOR_VERSION, gl_versions[v][0], OSMESA_CONTEXT_MINOR_VERSION,
+                             gl_versions[v][1], 0};
+        state.osmesa = OSMesaCreateContextAttribs(attrs, NULL);
+    }
     if (!state.osmesa) {
-        log_debug("OSMesa: cannot create a 3.3 core context");
+        log_debug("OSMesa: cannot create a core context, 3.3 or newer");
         return false;
     }
     if (!OSMesaMakeCurrent(state.osmesa, state.osmesa_pixel, GL_UNSIGNED_BYTE, 1, 1)) {

@@ -1,4 +1,5 @@
-/* platform.h - a GL 3.3+ core context on one of three backends, and the window around it.
+/* platform.h - the newest GL core context the driver gives (asked 4.6 down to 3.3) on one of three
+ * backends, and the window around it.
  *
  *   platform_create(desc)          returns EXIT_CODE_OK, EXIT_CODE_USAGE (no display: use --headless)
  *                                  or EXIT_CODE_SKIP (no GL context could be made); logs why

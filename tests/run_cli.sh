@@ -51,6 +51,10 @@ expect 2 "run with --headless" -- --frames 1
 # NVIDIA 32768).
 max=$(env -u DISPLAY "$bin" --headless --gl-info 2>/dev/null | sed -n 's/.*max_width=\([0-9]*\).*/\1/p')
 [ -n "$max" ] || { echo "skip: --gl-info found no GL context"; exit 77; }
+# The context is the newest core version the driver gives, never below the course's 3.3.
+ctx=$(env -u DISPLAY "$bin" --headless --gl-info 2>/dev/null | sed -n 's/^gl: context=\([0-9]*\)\.\([0-9]*\) core.*/\1\2/p')
+if [ -n "$ctx" ] && [ "$ctx" -ge 33 ]; then pass=$((pass + 1)); echo "ok   [--gl-info] context ${ctx:0:1}.${ctx:1}"
+else fail=$((fail + 1)); echo "FAIL [--gl-info] context '$ctx' (want a core version >= 3.3)"; fi
 expect 2 "larger than this GL allows" -- --headless --size "$((max + 1))x16" --scene "$src/assets/scenes/default.scene"
 # The screenshot's format follows its extension; an unknown one is refused before any rendering.
 expect 2 "unknown image format" -- --headless --size 32x24 --screenshot "$tmp/shot.gif"
