@@ -27,7 +27,6 @@
 #include "light_volumes.h"
 #include "log.h"
 
-#include <stdlib.h>
 #include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
@@ -60,12 +59,11 @@ static struct {
 
 static bool init(app *a)
 {
-    state.radius = (float)atof(app_extra(a, "radius"));
-    state.unscaled = strcmp(app_extra(a, "scale"), "none") == 0;
-    if (!(state.radius > 0.0f && state.radius < 1e30f)) {
-        log_error("bad --radius '%s': expected a number > 0", app_extra(a, "radius"));
+    double radius;
+    if (!app_extra_number(a, "radius", 1e-6, 1e6, &radius))
         return false;
-    }
+    state.radius = (float)radius;
+    state.unscaled = strcmp(app_extra(a, "scale"), "none") == 0;
     return gbuffer_create(&state.g, a->width, a->height) &&
            light_volumes_create(&state.lv, "FIXED_RADIUS 1\nOVERWRITE 1");
 }

@@ -30,7 +30,6 @@ bool deferred_fullscreen_render(deferred_fullscreen *d, const gbuffer *g, const 
     frame_timer_mark("lighting");
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, g->fbo.width, g->fbo.height);
-    gl_pass_state_reset();
     /* Background pixels are discarded by the shader: they keep this black, as forward's clear. */
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);

@@ -86,7 +86,6 @@ bool deferred_volumes_render(deferred_volumes *dv, const gbuffer *g, const gpu_s
     frame_timer_mark("lighting");
     glBindFramebuffer(GL_FRAMEBUFFER, dv->accum.id);
     glViewport(0, 0, dv->accum.width, dv->accum.height);
-    gl_pass_state_reset();
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
 
@@ -96,8 +95,6 @@ bool deferred_volumes_render(deferred_volumes *dv, const gbuffer *g, const gpu_s
 
     /* 2. every light's volume, added on top */
     light_volumes_bind(&dv->lv, g, gs, f->view);
-    if (f->windowed)
-        glUniform1i(glGetUniformLocation(dv->lv.program, "u_falloff"), SHADER_FALLOFF_WINDOWED);
     gl_samples_begin(dv->query, f->count_pixels);
     light_volumes_draw(&dv->lv, gs, f->volume_state);
     dv->shaded_pixels = gl_samples_end(dv->query, f->count_pixels);

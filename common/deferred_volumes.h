@@ -34,7 +34,6 @@ typedef struct deferred_volumes_frame {
     float exposure; /* 0 means 1 */
     light_volumes_view view;
     bool count_pixels;
-    bool windowed; /* the windowed falloff whatever the scene says (the benchmark's windowed row) */
 } deferred_volumes_frame;
 
 typedef struct deferred_volumes {

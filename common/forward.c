@@ -127,12 +127,11 @@ bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_opti
         return false;
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, gs->view.width, gs->view.height);
-    glClearColor(0, 0, 0, 1);
-    gl_pass_state_reset();
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     /* LEQUAL everywhere (the depth-tie rule in forward.h); after a pre-pass, EQUAL without writes */
     gl_pass_state depth = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
     gl_pass_state_apply(&depth);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (options.prepass) {
         forward_draw_depth(f, gs);
         depth.depth_func = GL_EQUAL, depth.depth_write = false;

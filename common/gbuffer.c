@@ -54,13 +54,12 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
     glBindFramebuffer(GL_FRAMEBUFFER, g->fbo.id);
     glViewport(0, 0, g->fbo.width, g->fbo.height);
     /* Zero normal/material and depth 1 mark the background; the lighting pass tests depth. */
-    glClearColor(0, 0, 0, 0);
-    gl_pass_state_reset();
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     /* Same state as forward_render (GL_LEQUAL: on an exact depth tie the object drawn last wins):
      * an object hides another exactly where it does there. */
     gl_pass_state_apply(&(gl_pass_state){.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true});
+    glClearColor(0, 0, 0, 0);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     /* Without this an SRGB8 attachment stores the linear value unconverted (and reads decode it). */
     glEnable(GL_FRAMEBUFFER_SRGB);
 

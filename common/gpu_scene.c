@@ -24,6 +24,7 @@ bool gpu_scene_create(const scene *src, gpu_scene *out)
 {
     memset(out, 0, sizeof *out);
     out->src = src;
+    out->falloff = src->falloff;
     out->meshes = calloc((size_t)src->mesh_count + 1, sizeof *out->meshes);
     out->world = calloc((size_t)src->object_count + 1, sizeof *out->world);
     out->normal_matrix = calloc((size_t)src->object_count + 1, sizeof *out->normal_matrix);
@@ -190,7 +191,7 @@ void gpu_scene_bind_lights(const gpu_scene *gs, GLuint program, int unit)
     glUniform1i(glGetUniformLocation(program, "u_lights"), unit);
     glUniform1i(glGetUniformLocation(program, "u_light_count"), gs->light_count);
     glUniform3fv(glGetUniformLocation(program, "u_ambient"), 1, gs->src->ambient);
-    glUniform1i(glGetUniformLocation(program, "u_falloff"), gs->src->falloff);
+    glUniform1i(glGetUniformLocation(program, "u_falloff"), gs->falloff);
     glActiveTexture(GL_TEXTURE0);
 }
 

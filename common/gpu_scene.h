@@ -8,7 +8,7 @@
  *                                    never reach the cut-off are culled here (radius 0)
  *   gpu_scene_bind_lights(gs, program, unit)
  *                                    u_lights (texture buffer on `unit`), u_light_count, u_ambient,
- *                                    u_falloff (the scene's falloff model)
+ *                                    u_falloff (gs->falloff: the scene's falloff model)
  *   gpu_scene_bind_objects(gs, program, unit)
  *                                    u_objects (texture buffer on `unit`) and u_view_proj
  *   gpu_scene_draw(gs, program)      every object: one instanced draw per batch of consecutive
@@ -67,6 +67,7 @@ typedef struct gpu_scene {
     frame_view view;
     double cutoff;
     float time;
+    int falloff; /* SHADER_FALLOFF_*: the scene's at create; a renderer may draw a copy with another */
 } gpu_scene;
 
 bool gpu_scene_create(const scene *src, gpu_scene *out);

@@ -92,11 +92,14 @@ bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint
         res.shaded = o.count_pixels ? deferred_fullscreen_shaded_pixels(&r->fullscreen) : -1;
         res.lights_per_pixel = gs->light_count;
     } else if (ok) {
-        const deferred_volumes_frame f = {.volume_state = &renderer_volume_pass,
-                                          .accum_format = GL_RGBA16F,
-                                          .count_pixels = o.count_pixels,
-                                          .windowed = id == RENDERER_DEFERRED_VOLUMES_WINDOWED};
-        ok = gbuffer_render(&r->g, gs) && deferred_volumes_render(&r->volumes, &r->g, gs, target, &f);
+        const deferred_volumes_frame f = {
+            .volume_state = &renderer_volume_pass, .accum_format = GL_RGBA16F, .count_pixels = o.count_pixels};
+        /* The windowed row draws the same frame with the other falloff: a copy of the view, the
+         * lights and the buffers, shaded with that model (gpu_scene_bind_lights reads it). */
+        gpu_scene shaded = *gs;
+        if (id == RENDERER_DEFERRED_VOLUMES_WINDOWED)
+            shaded.falloff = SHADER_FALLOFF_WINDOWED;
+        ok = gbuffer_render(&r->g, &shaded) && deferred_volumes_render(&r->volumes, &r->g, &shaded, target, &f);
         res.shaded = deferred_volumes_shaded_pixels(&r->volumes);
         res.lights_per_pixel = 1.0; /* one fragment per (pixel, light) */
     }
