@@ -109,7 +109,7 @@ static bool frame(app *a)
 static bool key(app *a, int k)
 {
     (void)a;
-    if (k != 'S')
+    if (k != 'I')
         return false;
     state.unscaled = !state.unscaled;
     log_info("volume mesh: %s", state.unscaled ? "unscaled (inscribed)" : "scaled by 1 / inradius");

@@ -103,14 +103,14 @@ static bool frame(app *a)
 static bool key(app *a, int k)
 {
     (void)a;
-    if (k == 'A') {
+    if (k == 'B') {
         state.accum = accum_names[state.accum + 1] ? state.accum + 1 : 0;
         log_info("accumulation buffer: %s", accum_names[state.accum]);
     } else if (k == 'T') {
         state.tonemap = (deferred_volumes_tonemap)((state.tonemap + 1) % 3);
         log_info("tone map: %s", tonemaps[state.tonemap]);
-    } else if (k == '-' || k == '=') {
-        state.exposure *= k == '-' ? 0.5 : 2.0;
+    } else if (k == KEY_PAGE_DOWN || k == KEY_PAGE_UP) {
+        state.exposure *= k == KEY_PAGE_DOWN ? 0.5 : 2.0;
         log_info("exposure: %g (used by the exposure and reinhard tone maps)", state.exposure);
     } else {
         return false;

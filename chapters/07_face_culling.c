@@ -113,10 +113,10 @@ static bool frame(app *a)
 static bool key(app *a, int k)
 {
     (void)a;
-    if (k == 'C') {
+    if (k == 'X') {
         set_cull((state.cull + 1) % 3, state.pass.depth_clamp);
         log_info("cull %s", culls[state.cull]);
-    } else if (k == 'D') {
+    } else if (k == 'Z') {
         state.pass.depth_clamp = !state.pass.depth_clamp;
         log_info("depth clamp %s", state.pass.depth_clamp ? "on" : "off");
     } else {

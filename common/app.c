@@ -183,6 +183,7 @@ static bool handle_key(app *a, const app_desc *desc, int key, bool *paused)
     case KEY_ACTION_CUTOFF_DOUBLE: a->cutoff = a->cutoff > 0 ? a->cutoff * 2 : LIGHT_DEFAULT_CUTOFF; break;
     case KEY_ACTION_CUTOFF_EXACT: a->cutoff = a->cutoff > 0 ? 0 : LIGHT_DEFAULT_CUTOFF; break;
     case KEY_ACTION_SCREENSHOT: save_numbered_screenshot(a); break;
+    default: break; /* the camera, lights, overlay and compare keys: being wired in */
     }
     return true;
 }

@@ -23,6 +23,7 @@
 #include "fbo.h"
 #include "frame_timer.h"
 #include "gpu_scene.h"
+#include "keys.h"
 #include "renderers.h"
 #include "scene.h"
 

@@ -4,22 +4,40 @@
 #include <string.h>
 
 static const key_binding table[] = {
+    {KEY_MOUSE, "left drag", NULL, KEY_ACTION_MOUSE, "orbit around the target (on the split's divider: move it)"},
+    {KEY_MOUSE, "right drag", NULL, KEY_ACTION_MOUSE, "look around (fly)"},
+    {KEY_MOUSE, "scroll", NULL, KEY_ACTION_MOUSE, "zoom towards the target"},
+    {'W', "W", NULL, KEY_ACTION_FLY, "fly forward (held; A S D: left, back, right)"},
+    {'A', "A", NULL, KEY_ACTION_FLY, "fly left (held)"},
+    {'S', "S", NULL, KEY_ACTION_FLY, "fly back (held)"},
+    {'D', "D", NULL, KEY_ACTION_FLY, "fly right (held)"},
+    {'F', "F", NULL, KEY_ACTION_FRAME_SCENE, "frame the whole scene"},
+    {KEY_HOME, "Home", NULL, KEY_ACTION_HOME_CAMERA, "back to the scene's camera"},
+    {'C', "C", NULL, KEY_ACTION_PRINT_POSE, "print the camera as a scene-file line (and for --camera)"},
+    {'G', "G", NULL, KEY_ACTION_ADD_LIGHT, "add a light in front of the camera"},
+    {'=', "+", NULL, KEY_ACTION_LIGHTS_DOUBLE, "double the generated lights (as --lights)"},
+    {'-', "-", NULL, KEY_ACTION_LIGHTS_HALF, "halve the generated lights"},
     {'R', "R", NULL, KEY_ACTION_RENDERER, "next renderer (--renderer lists them; every chapter has forward)"},
-    {'V', "V", NULL, KEY_ACTION_VIEW, "next view (--view lists them: G-buffer targets, reach, ring, overdraw)"},
+    {'V', "V", NULL, KEY_ACTION_VIEW, "next view (--view lists them: G-buffer targets, debug views)"},
+    {'M', "M", NULL, KEY_ACTION_COMPARE, "compare with forward: split screen, difference x16, off"},
+    {',', ",", NULL, KEY_ACTION_DIVIDER_LEFT, "move the split's divider left (or drag it)"},
+    {'.', ".", NULL, KEY_ACTION_DIVIDER_RIGHT, "move the split's divider right"},
     {'[', "[", NULL, KEY_ACTION_CUTOFF_HALF, "halve the attenuation cut-off"},
     {']', "]", NULL, KEY_ACTION_CUTOFF_DOUBLE, "double the attenuation cut-off"},
     {'0', "0", NULL, KEY_ACTION_CUTOFF_EXACT, "the exact picture (no cut-off), or back"},
     {KEY_SPACE, "Space", NULL, KEY_ACTION_PAUSE, "pause / resume the animation"},
+    {'H', "H", NULL, KEY_ACTION_OVERLAY, "on-screen overlay: what is drawn and what it costs"},
+    {KEY_F1, "F1", NULL, KEY_ACTION_KEY_LIST, "list these keys on screen"},
     {'P', "P", NULL, KEY_ACTION_SCREENSHOT, "save a screenshot into out/"},
     {KEY_ESCAPE, "Esc", NULL, KEY_ACTION_QUIT, "quit"},
     {'Q', "Q", NULL, KEY_ACTION_QUIT, "quit"},
-    {'S', "S", "04", KEY_ACTION_CHAPTER, "scale the volume mesh by 1 / inradius, or not"},
-    {'A', "A", "06", KEY_ACTION_CHAPTER, "accumulation buffer: rgba16f, rgba8 (saturates), rgba32f"},
+    {'I', "I", "04", KEY_ACTION_CHAPTER, "scale the volume mesh by 1 / inradius, or not"},
+    {'B', "B", "06", KEY_ACTION_CHAPTER, "accumulation buffer: rgba16f, rgba8 (saturates), rgba32f"},
     {'T', "T", "06", KEY_ACTION_CHAPTER, "tone map: none, exposure, reinhard"},
-    {'-', "-", "06", KEY_ACTION_CHAPTER, "halve the exposure"},
-    {'=', "=", "06", KEY_ACTION_CHAPTER, "double the exposure"},
-    {'C', "C", "07", KEY_ACTION_CHAPTER, "cull front faces (right), back faces, or none (both wrong)"},
-    {'D', "D", "07", KEY_ACTION_CHAPTER, "depth clamp on / off"},
+    {KEY_PAGE_DOWN, "PgDn", "06", KEY_ACTION_CHAPTER, "halve the exposure"},
+    {KEY_PAGE_UP, "PgUp", "06", KEY_ACTION_CHAPTER, "double the exposure"},
+    {'X', "X", "07", KEY_ACTION_CHAPTER, "cull front faces (right), back faces, or none (both wrong)"},
+    {'Z', "Z", "07", KEY_ACTION_CHAPTER, "depth clamp on / off"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])
@@ -33,7 +51,7 @@ static bool applies(const key_binding *b, const char *program)
 const key_binding *keys_find(int code, const char *program)
 {
     for (size_t i = 0; i < TABLE_SIZE; i++)
-        if (table[i].code == code && applies(&table[i], program))
+        if (code != KEY_MOUSE && table[i].code == code && applies(&table[i], program))
             return &table[i];
     return NULL;
 }

@@ -16,14 +16,20 @@
 #include <stdbool.h>
 #include <stdio.h>
 
-/* Letters and digits are their ASCII upper-case codes ('F', '1'); the platform maps the others. */
+/* Letters and digits are their ASCII upper-case codes ('F', '1'); the platform maps the others.
+ * KEY_MOUSE marks the table's mouse gestures, which no key code matches. */
 enum {
+    KEY_MOUSE = -1,
     KEY_ESCAPE = 256,
     KEY_SPACE = ' ',
     KEY_UP = 265,
     KEY_DOWN = 264,
     KEY_LEFT = 263,
     KEY_RIGHT = 262,
+    KEY_PAGE_UP = 266,
+    KEY_PAGE_DOWN = 267,
+    KEY_HOME = 268,
+    KEY_F1 = 290,
 };
 
 typedef enum key_action {
@@ -36,6 +42,19 @@ typedef enum key_action {
     KEY_ACTION_CUTOFF_EXACT,
     KEY_ACTION_PAUSE,
     KEY_ACTION_SCREENSHOT,
+    KEY_ACTION_FLY, /* held: W A S D move the camera (common/camera.c) */
+    KEY_ACTION_FRAME_SCENE,
+    KEY_ACTION_HOME_CAMERA,
+    KEY_ACTION_PRINT_POSE,
+    KEY_ACTION_ADD_LIGHT,
+    KEY_ACTION_LIGHTS_DOUBLE,
+    KEY_ACTION_LIGHTS_HALF,
+    KEY_ACTION_OVERLAY,
+    KEY_ACTION_KEY_LIST,
+    KEY_ACTION_COMPARE,
+    KEY_ACTION_DIVIDER_LEFT,
+    KEY_ACTION_DIVIDER_RIGHT,
+    KEY_ACTION_MOUSE, /* a mouse gesture, listed with the keys; the runner reads the mouse itself */
 } key_action;
 
 typedef struct key_binding {
