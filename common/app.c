@@ -5,6 +5,7 @@
 #include "data_dir.h"
 #include "gl_util.h"
 #include "image.h"
+#include "input.h"
 #include "light.h"
 #include "log.h"
 #include "platform.h"
@@ -112,20 +113,6 @@ static bool check_size_limits(int width, int height)
     return true;
 }
 
-static bool save_screenshot(const app *a, const char *path)
-{
-    image img;
-    if (!image_create(&img, a->width, a->height))
-        return false;
-    bool ok = fbo_read_rgba8(&a->target, 0, img.pixels);
-    image_flip_rows(&img); /* image files store the top row first */
-    ok = ok && image_write(path, &img);
-    image_destroy(&img);
-    if (ok)
-        log_info("wrote %s (%dx%d)", path, a->width, a->height);
-    return ok;
-}
-
 /* "geometry 3.10, lighting 8.20" from frame times summed over n frames. */
 static void format_passes(const frame_times *sum, int n, char *out, size_t size)
 {
@@ -163,13 +150,15 @@ static void save_numbered_screenshot(const app *a)
     char path[64];
     mkdir("out", 0755);
     snprintf(path, sizeof path, "out/%s-%ld.png", a->cli->program, a->frame_index);
-    save_screenshot(a, path);
+    app_window_save(&a->target, path);
 }
 
 /* One key, as common/keys.c's table says; returns false to quit. */
-static bool handle_key(app *a, const app_desc *desc, int key, bool *paused)
+static bool handle_key(app *a, const app_desc *desc, app_window *w, int key, bool *paused)
 {
     const key_binding *b = keys_find(key, a->cli->program);
+    if (b && app_window_key(w, a, b->action))
+        return true;
     switch (b ? b->action : KEY_ACTION_CHAPTER) {
     case KEY_ACTION_CHAPTER:
         if (b && desc->key)
@@ -183,7 +172,7 @@ static bool handle_key(app *a, const app_desc *desc, int key, bool *paused)
     case KEY_ACTION_CUTOFF_DOUBLE: a->cutoff = a->cutoff > 0 ? a->cutoff * 2 : LIGHT_DEFAULT_CUTOFF; break;
     case KEY_ACTION_CUTOFF_EXACT: a->cutoff = a->cutoff > 0 ? 0 : LIGHT_DEFAULT_CUTOFF; break;
     case KEY_ACTION_SCREENSHOT: save_numbered_screenshot(a); break;
-    default: break; /* the camera, lights, overlay and compare keys: being wired in */
+    default: break; /* the window's own (app_window_key), or a mouse gesture */
     }
     return true;
 }
@@ -193,11 +182,12 @@ typedef struct loop {
     const app_desc *desc;
     const cli_options *opt;
     app_hooks hooks;
+    app_window window;
     double *times;   /* --bench: one per timed frame */
     double *pass_ms; /* --bench: FRAME_TIMER_MAX_PASSES per timed frame */
     long total;      /* frames to draw; 0: until the window closes */
     bool paused;
-    double last_clock, title_clock;
+    double last_clock, title_clock, move_clock;
     frame_times title_sum; /* the timer's frames since the title was last updated */
     int title_n;
 } loop;
@@ -213,7 +203,8 @@ static bool follow_size(app *a, loop *l)
         return true;
     a->width = w, a->height = h;
     log_debug("resize to %dx%d", w, h);
-    return check_size_limits(w, h) && make_target(a) && (!l->desc->resize || l->desc->resize(a));
+    return check_size_limits(w, h) && make_target(a) && (!l->desc->resize || l->desc->resize(a)) &&
+           app_window_resize(&l->window, a);
 }
 
 /* --bench: the frame's wall time and the timer's passes (one frame late with GPU queries). */
@@ -241,6 +232,12 @@ static void record_title(const app *a, loop *l, double now)
     }
     if (now - l->title_clock > 0.5 && l->title_n > 0) {
         update_title(a, &l->title_sum, l->title_n);
+        frame_times *avg = &l->window.times; /* the overlay's figures */
+        *avg = l->title_sum;
+        for (int k = 0; k < avg->count; k++)
+            avg->ms[k] /= l->title_n;
+        avg->frame_ms /= l->title_n;
+        l->title_sum = (frame_times){0};
         l->title_clock = now, l->title_n = 0;
     }
 }
@@ -256,7 +253,10 @@ static bool draw_frame(app *a, loop *l, int *rc)
     double t0 = platform_time();
     frame_timer_begin(&a->timer);
     frame_timer_mark("scene update");
-    bool ok = gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) && l->desc->frame(a);
+    a->count_pixels = l->opt->bench || l->window.overlay_on;
+    a->shaded_pixels = -1;
+    bool ok = gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) && l->desc->frame(a) &&
+              app_window_compare(&l->window, a);
     frame_timer_end(&a->timer);
     if (!ok || (!gl_check("frame") && l->opt->gl_debug)) {
         *rc = EXIT_CODE_RUNTIME;
@@ -266,9 +266,36 @@ static bool draw_frame(app *a, loop *l, int *rc)
         glFinish(); /* the frame's wall time, whatever the pass clock */
         record_bench(a, l, (platform_time() - t0) * 1000.0);
     }
-    if (platform_is_windowed())
+    if (platform_is_windowed() || l->window.have_script)
         record_title(a, l, now);
     return true;
+}
+
+/* Keys, the script's events and the mouse, before a frame; false to quit. */
+static bool take_input(app *a, loop *l)
+{
+    double now = platform_time();
+    input_script_feed(&l->window.script, a->frame_index);
+    bool running = true;
+    for (int key; (key = input_take_key()) != 0;)
+        running = running && handle_key(a, l->desc, &l->window, key, &l->paused);
+    app_window_move(&l->window, a, now - l->move_clock);
+    l->move_clock = now;
+    return running;
+}
+
+/* After a frame: --screenshot on the last one, the script's events, the window; false to stop. */
+static bool show_frame(app *a, loop *l, bool last, int *rc)
+{
+    const fbo *display = app_window_display(&l->window, a, l->paused);
+    const fbo *picture = display ? display : l->window.shown;
+    if (last && l->opt->screenshot && !app_window_save(l->opt->overlay ? picture : l->window.shown, l->opt->screenshot)) {
+        *rc = EXIT_CODE_RUNTIME;
+        return false;
+    }
+    bool going = !l->window.have_script || app_window_after_frame(&l->window, a, picture, l->paused, rc);
+    platform_present(picture->id, a->width, a->height);
+    return going;
 }
 
 /* Frames until the count is reached or the window closes; returns the exit code. */
@@ -283,16 +310,11 @@ static int run_loop(app *a, loop *l)
             break;
         if (!follow_size(a, l))
             return EXIT_CODE_RUNTIME;
-        for (int key; (key = platform_take_key()) != 0;)
-            running = running && handle_key(a, l->desc, key, &l->paused);
-        if (!running || !draw_frame(a, l, &rc))
+        if (!take_input(a, l) || !draw_frame(a, l, &rc))
             break;
+        bool last = l->total > 0 && a->frame_index + 1 >= l->total;
+        running = show_frame(a, l, last, &rc) && !last;
         a->frame_index++;
-        bool last = l->total > 0 && a->frame_index >= l->total;
-        if (last && l->opt->screenshot && !save_screenshot(a, l->opt->screenshot))
-            return EXIT_CODE_RUNTIME;
-        platform_present(a->target.id, a->width, a->height);
-        running = running && !last;
     }
     return rc;
 }
@@ -406,7 +428,7 @@ static int app_finish(app *a, loop *l, int rc)
         rc = app_hooks_check(&l->hooks, a, opt);
     if (rc == EXIT_CODE_OK && opt->bench && a->frame_index == l->total)
         app_bench_print(a, l->times, l->pass_ms, opt->frames);
-    if (rc == EXIT_CODE_OK && opt->screenshot && l->total == 0 && !save_screenshot(a, opt->screenshot))
+    if (rc == EXIT_CODE_OK && opt->screenshot && l->total == 0 && !app_window_save(l->window.shown, opt->screenshot))
         rc = EXIT_CODE_RUNTIME; /* window closed by the user: keep the last frame */
     if (opt->gl_debug && gl_debug_error_count() > 0) {
         log_error("%ld GL error(s) during the run", gl_debug_error_count());
@@ -459,8 +481,12 @@ int app_run(const app_desc *desc, int argc, char **argv)
         return rc;
 
     loop l = {.desc = desc, .opt = &opt, .paused = opt.paused, .last_clock = platform_time()};
+    l.move_clock = l.last_clock;
     app_hooks_init(&l.hooks, &opt);
+    input_reset();
     rc = app_setup(&a, desc);
+    if (rc == EXIT_CODE_OK && !app_window_create(&l.window, &a, &opt))
+        rc = EXIT_CODE_USAGE; /* a bad script is an input error */
     if (rc == EXIT_CODE_OK && opt.bench &&
         (!(l.times = malloc((size_t)opt.frames * sizeof *l.times)) ||
          !(l.pass_ms = calloc((size_t)opt.frames * FRAME_TIMER_MAX_PASSES, sizeof *l.pass_ms)))) {
@@ -470,8 +496,11 @@ int app_run(const app_desc *desc, int argc, char **argv)
     l.total = (long)opt.frames + (opt.bench ? opt.warmup : 0);
     if (l.total > 0)
         l.total += l.hooks.cycle_end + opt.minimise_cycle;
+    if (l.total > 0 && input_script_last_frame(&l.window.script) >= l.total)
+        l.total = input_script_last_frame(&l.window.script) + 1; /* a script runs to its end */
     if (rc == EXIT_CODE_OK)
         rc = app_finish(&a, &l, run_loop(&a, &l));
+    app_window_destroy(&l.window);
     app_close(&a, desc);
     free(l.times);
     free(l.pass_ms);

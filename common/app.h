@@ -13,8 +13,9 @@
  *
  * A chapter fills an app_desc: its command-line description and five callbacks. Its frame
  * callback draws the final, display-encoded picture into a->target (RGBA8 colour + 32-bit float
- * depth), which the runner shows in the window or saves with --screenshot. With --bench it may
- * count its lighting pass's fragments with a->query (gl_samples_begin/end) into a->shaded_pixels.
+ * depth), which the runner shows in the window or saves with --screenshot. When a->count_pixels
+ * (--bench, or the overlay is on) it counts its lighting pass's fragments with a->query
+ * (gl_samples_begin/end) into a->shaded_pixels; a->pass_state, when it sets it, is shown too.
  */
 #ifndef COMMON_APP_H
 #define COMMON_APP_H
@@ -43,6 +44,8 @@ typedef struct app {
     GLuint query;       /* a GL_SAMPLES_PASSED query for the chapter's lighting pass */
     frame_timer timer;  /* the frame and its passes, on an honest clock (frame_timer.h) */
     long shaded_pixels; /* what the chapter counted with it in the last frame; -1 if not */
+    bool count_pixels;  /* whether to count (--bench, or the overlay is on) */
+    const gl_pass_state *pass_state; /* the chapter's lighting pass state, shown by the overlay */
     char default_scene[4200]; /* the data folder's default scene, when no --scene was given */
 } app;
 

@@ -15,6 +15,9 @@
 #define COMMON_APP_INTERNAL_H
 
 #include "app.h"
+#include "compare.h"
+#include "input_script.h"
+#include "overlay.h"
 
 typedef struct app_hooks {
     long cycle_end;          /* last frame of --resize-cycle, 0 when off */
@@ -31,5 +34,46 @@ void app_hooks_resize(app_hooks *h, const app *a, const cli_options *opt, int *w
 void app_hooks_after_frame(app_hooks *h, bool minimised);
 int app_hooks_check(const app_hooks *h, const app *a, const cli_options *opt);
 void app_bench_print(const app *a, double *ms, double *pass_ms, int n);
+
+/* The learner's window (app_window.c):
+ *   app_window_create(w, a, opt) / app_window_destroy(w) / app_window_resize(w, a)
+ *   app_window_move(w, a, dt)          mouse and held keys to the camera
+ *   app_window_key(w, a, action)       the camera, light, overlay and compare keys; false: not one
+ *   app_window_compare(w, a)           after the chapter's frame: forward and the composed picture
+ *   app_window_display(w, a, paused)   the picture with the overlay: what the window shows
+ *   app_window_after_frame(w, a, shown, paused, &rc)
+ *                                      the script's after-frame events; false: stop (rc says why)
+ *   app_window_overlay_text(w, a, paused, out, size)
+ *   app_window_save(fbo, path)         colour attachment 0 as an image file */
+#define APP_COMPARE_PASS "forward (compare)"
+
+typedef struct app_window {
+    input_script script;
+    bool have_script;
+    scene_camera home; /* the scene's camera, for Home */
+    float extent;      /* the scene's largest side: how fast W A S D fly */
+    bool overlay_on, key_list_on;
+    compare_mode compare;
+    float divider; /* the split's divider, a fraction of the width */
+    bool dragging_divider;
+    compare cmp;
+    bool have_cmp, have_text;
+    overlay text;
+    fbo display;
+    const fbo *shown;  /* the last frame's picture: the target or the composed comparison */
+    frame_times times; /* the overlay's figures: the timer's frames averaged over half a second */
+    long objects_marked;
+} app_window;
+
+bool app_window_create(app_window *w, app *a, const cli_options *opt);
+void app_window_destroy(app_window *w);
+bool app_window_resize(app_window *w, const app *a);
+void app_window_move(app_window *w, app *a, double dt);
+bool app_window_key(app_window *w, app *a, key_action action);
+bool app_window_compare(app_window *w, app *a);
+const fbo *app_window_display(app_window *w, const app *a, bool paused);
+bool app_window_after_frame(app_window *w, const app *a, const fbo *shown, bool paused, int *rc);
+int app_window_overlay_text(const app_window *w, const app *a, bool paused, char *out, size_t size);
+bool app_window_save(const fbo *f, const char *path);
 
 #endif

@@ -86,6 +86,11 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "                           scene's camera line: \"eye X Y Z target X Y Z [up X Y Z] [fovy F]\"\n"
             "  --falloff hard|windowed  how lights fade to their radius (default: the scene's, else hard):\n"
             "                           windowed multiplies by (1 - (d/r)^4)^2, so the cut-off leaves no step\n"
+            "  --compare MODE           off|split|difference: forward left of a divider and this chapter's\n"
+            "                           renderer right of it, or |difference| x 16 as a heat map (key M)\n"
+            "  --overlay                the on-screen overlay from the start, also in --screenshot (key H)\n"
+            "  --script FILE            timed keys and mouse events, as if typed (format:\n"
+            "                           common/input_script.h; the tests drive the window with it)\n"
             "  --gl-info                print the GL context's renderer, version and limits, then exit\n"
             "  --verbose                more log lines\n",
             desc->default_cutoff);
@@ -191,6 +196,7 @@ static const struct flag_option {
     {"--gl-debug", offsetof(cli_options, gl_debug)},
     {"--verbose", offsetof(cli_options, verbose)},
     {"--gl-info", offsetof(cli_options, gl_info)},
+    {"--overlay", offsetof(cli_options, overlay)},
 };
 
 #define COUNT(array) ((int)(sizeof array / sizeof array[0]))
@@ -320,7 +326,8 @@ static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc
         size_t offset;
     } paths[] = {{"--screenshot", offsetof(cli_options, screenshot)},
                  {"--scene", offsetof(cli_options, scene_path)},
-                 {"--data-dir", offsetof(cli_options, data_dir)}};
+                 {"--data-dir", offsetof(cli_options, data_dir)},
+                 {"--script", offsetof(cli_options, script)}};
     for (int k = 0; k < COUNT(paths); k++) {
         if (!is_option(a, paths[k].name))
             continue;
@@ -337,6 +344,10 @@ static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc
     if (is_option(a, "--falloff")) {
         static const char *const falloffs[] = {"hard", "windowed", NULL};
         return parse_choice(desc, "falloff", option_value(argc, argv, i, "--falloff"), falloffs, &out->falloff);
+    }
+    if (is_option(a, "--compare")) {
+        static const char *const modes[] = {"off", "split", "difference", NULL};
+        return parse_choice(desc, "compare mode", option_value(argc, argv, i, "--compare"), modes, &out->compare);
     }
     if (is_option(a, "--renderer")) {
         if (!desc->renderers)
@@ -393,6 +404,9 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
                            "--resize-cycle");
     if (out->minimise_cycle > 0 && out->headless)
         return usage_error(desc, "%s minimises the window: not with --headless", "--minimise-cycle");
+    if ((out->script || out->overlay || (out->compare && strcmp(out->compare, "off") != 0)) && out->bench)
+        return usage_error(desc, "%s draws more than the chapter's frame: not with --bench",
+                           out->script ? "--script" : out->overlay ? "--overlay" : "--compare");
     if (out->minimise_cycle > 0 && out->bench)
         return usage_error(desc, "%s stops the frames it would time: not with --bench", "--minimise-cycle");
     return EXIT_CODE_OK;

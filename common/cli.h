@@ -67,6 +67,9 @@ typedef struct cli_options {
     int minimise_cycle;   /* window: minimise and restore N times; no frame may be drawn while minimised */
     bool verbose;
     bool gl_info;         /* print the context's renderer, version and limits, and exit */
+    const char *script;   /* timed keys and mouse events (common/input_script.h) */
+    bool overlay;         /* the overlay on from the start, and in --screenshot */
+    const char *compare;  /* "off", "split" or "difference": forward beside the chapter's renderer */
     const char *extra_values[CLI_MAX_EXTRAS];
 } cli_options;
 

@@ -1,6 +1,7 @@
 /* keys.c - see keys.h. */
 #include "keys.h"
 
+#include <ctype.h>
 #include <string.h>
 
 static const key_binding table[] = {
@@ -19,7 +20,7 @@ static const key_binding table[] = {
     {'-', "-", NULL, KEY_ACTION_LIGHTS_HALF, "halve the generated lights"},
     {'R', "R", NULL, KEY_ACTION_RENDERER, "next renderer (--renderer lists them; every chapter has forward)"},
     {'V', "V", NULL, KEY_ACTION_VIEW, "next view (--view lists them: G-buffer targets, debug views)"},
-    {'M', "M", NULL, KEY_ACTION_COMPARE, "compare with forward: split screen, difference x16, off"},
+    {'M', "M", NULL, KEY_ACTION_COMPARE, "compare with forward: split screen, difference (beyond 1/255, x16), off"},
     {',', ",", NULL, KEY_ACTION_DIVIDER_LEFT, "move the split's divider left (or drag it)"},
     {'.', ".", NULL, KEY_ACTION_DIVIDER_RIGHT, "move the split's divider right"},
     {'[', "[", NULL, KEY_ACTION_CUTOFF_HALF, "halve the attenuation cut-off"},
@@ -61,7 +62,7 @@ void keys_print_help(FILE *stream, const char *program, bool views)
     fprintf(stream, "\nwindow keys:\n");
     for (size_t i = 0; i < TABLE_SIZE; i++)
         if (applies(&table[i], program) && (views || table[i].action != KEY_ACTION_VIEW))
-            fprintf(stream, "  %-8s %s\n", table[i].label, table[i].does);
+            fprintf(stream, "  %-10s %s\n", table[i].label, table[i].does);
 }
 
 void keys_print_markdown(FILE *stream)
@@ -70,4 +71,14 @@ void keys_print_markdown(FILE *stream)
     for (size_t i = 0; i < TABLE_SIZE; i++)
         fprintf(stream, "| `%s` | %s | %s |\n", table[i].label, table[i].chapters ? table[i].chapters : "all",
                 table[i].does);
+}
+
+int keys_code(const char *label)
+{
+    for (size_t i = 0; i < TABLE_SIZE; i++)
+        if (table[i].code != KEY_MOUSE && strcmp(table[i].label, label) == 0)
+            return table[i].code;
+    if (label[0] && !label[1] && isgraph((unsigned char)label[0]))
+        return toupper((unsigned char)label[0]);
+    return 0;
 }

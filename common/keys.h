@@ -6,6 +6,8 @@
  *   keys_print_help(stream, program, views)  the --help "window keys" section of that chapter
  *                                            (views: whether it has views for V to cycle)
  *   keys_print_markdown(stream)              the README's key table
+ *   keys_code(label)                         the code of a key by its label ("W", "Space", "F1",
+ *                                            "+"), any single printable character, or 0
  *
  * A chapter's own keys are in the table too, tagged with its number; the runner hands them to the
  * chapter's key callback, which is where their lesson is.
@@ -68,5 +70,6 @@ typedef struct key_binding {
 const key_binding *keys_find(int code, const char *program);
 void keys_print_help(FILE *stream, const char *program, bool views);
 void keys_print_markdown(FILE *stream);
+int keys_code(const char *label);
 
 #endif

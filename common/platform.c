@@ -4,6 +4,7 @@
 #include "platform.h"
 
 #include "gl_util.h"
+#include "input.h"
 #include "log.h"
 
 #include <EGL/egl.h>
@@ -16,7 +17,6 @@
 #include <string.h>
 #include <time.h>
 
-#define KEY_QUEUE 32
 #define RESTORE_WAIT 2.0 /* seconds platform_poll waits for a window it asked back (test hook) */
 
 static struct {
@@ -26,8 +26,6 @@ static struct {
     EGLContext egl_context;
     OSMesaContext osmesa;
     unsigned char osmesa_pixel[4]; /* OSMesa wants a colour buffer; we never draw to it */
-    int keys[KEY_QUEUE];
-    int key_count;
     double restore_at; /* > 0: platform_restore_at() was called */
 } state;
 
@@ -45,14 +43,41 @@ static void glfw_error(int code, const char *message)
     log_debug("GLFW error 0x%x: %s", code, message);
 }
 
+/* GLFW's key codes are keys.h's (letters are ASCII, the others GLFW's numbers); the keypad's
+ * plus and minus are the main keyboard's. */
 static void glfw_key(GLFWwindow *w, int key, int scancode, int action, int mods)
 {
     (void)w;
     (void)scancode;
     (void)mods;
-    if (action != GLFW_PRESS || state.key_count == KEY_QUEUE)
+    if (action == GLFW_REPEAT)
         return;
-    state.keys[state.key_count++] = key == GLFW_KEY_ESCAPE ? KEY_ESCAPE : key;
+    key = key == GLFW_KEY_KP_ADD ? '=' : key == GLFW_KEY_KP_SUBTRACT ? '-' : key;
+    input_key(key, action == GLFW_PRESS);
+}
+
+/* Screen units to framebuffer pixels: on a HiDPI screen they differ by the content scale. */
+static void glfw_cursor(GLFWwindow *w, double x, double y)
+{
+    int ww = 0, wh = 0, fw = 0, fh = 0;
+    glfwGetWindowSize(w, &ww, &wh);
+    glfwGetFramebufferSize(w, &fw, &fh);
+    input_mouse_move(ww > 0 ? x * fw / ww : x, wh > 0 ? y * fh / wh : y);
+}
+
+static void glfw_button(GLFWwindow *w, int button, int action, int mods)
+{
+    (void)w;
+    (void)mods;
+    int b = button == GLFW_MOUSE_BUTTON_LEFT ? INPUT_BUTTON_LEFT : button == GLFW_MOUSE_BUTTON_RIGHT ? INPUT_BUTTON_RIGHT : -1;
+    input_mouse_button(b, action == GLFW_PRESS);
+}
+
+static void glfw_scroll(GLFWwindow *w, double dx, double dy)
+{
+    (void)w;
+    (void)dx;
+    input_scroll(dy);
 }
 
 /* Core versions asked for, newest first, and the first the driver gives is kept: asked for 3.3 a
@@ -97,6 +122,9 @@ static int create_glfw(const platform_desc *desc)
     glfwMakeContextCurrent(state.window);
     glfwSwapInterval(0); /* measure the renderer, not the display's refresh */
     glfwSetKeyCallback(state.window, glfw_key);
+    glfwSetCursorPosCallback(state.window, glfw_cursor);
+    glfwSetMouseButtonCallback(state.window, glfw_button);
+    glfwSetScrollCallback(state.window, glfw_scroll);
     if (!gladLoadGL(glfwGetProcAddress)) {
         log_error("cannot load GL functions through GLFW");
         return EXIT_CODE_SKIP;
@@ -347,11 +375,3 @@ void platform_set_window_size(int width, int height)
         glfwSetWindowSize(state.window, width, height);
 }
 
-int platform_take_key(void)
-{
-    if (state.key_count == 0)
-        return 0;
-    int k = state.keys[0];
-    memmove(state.keys, state.keys + 1, (size_t)(--state.key_count) * sizeof state.keys[0]);
-    return k;
-}

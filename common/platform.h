@@ -18,9 +18,9 @@
  *   platform_present(fbo, w, h)    copy the app's framebuffer to the window and swap
  *   platform_set_title(text)
  *   platform_set_window_size(w, h) ask for a new window size in screen units (no-op headless)
- *   platform_take_key()            next key pressed since the last call (KEY_* of keys.h), or 0
  *   platform_time()                monotonic seconds
  *
+ * Keys and the mouse go to common/input.c, where the runner reads them.
  * Every chapter renders into its own framebuffer; the window only shows it.
  * That keeps one code path for windowed and headless runs.
  */
@@ -54,7 +54,6 @@ void platform_restore_at(double when);
 void platform_present(GLuint fbo, int width, int height);
 void platform_set_title(const char *text);
 void platform_set_window_size(int width, int height);
-int platform_take_key(void);
 double platform_time(void);
 
 #endif
