@@ -123,16 +123,16 @@ static void format_passes(const frame_times *sum, int n, char *out, size_t size)
 
 /* The title shows the frame time the timer measured (never CPU submission time alone), its passes
  * and the clock; --verbose logs it too. */
-static void update_title(const app *a, const frame_times *sum, int n)
+static void update_title(const app *a, const frame_times *sum, int n, bool paused)
 {
     char title[640], passes[320];
     double ms = sum->frame_ms / n;
     format_passes(sum, n, passes, sizeof passes);
-    snprintf(title, sizeof title, "%s | %s%s%s | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps; %s) [%s] | cut-off %.4g%s",
+    snprintf(title, sizeof title, "%s | %s%s%s | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps; %s) [%s] | cut-off %.4g%s%s",
              a->cli->program, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward",
              a->cli->views ? " | view " : "", a->cli->views ? a->cli->views[a->view] : "", a->scene.light_count,
              a->gs.culled_count, a->width, a->height, ms, ms > 0 ? 1000.0 / ms : 0.0, passes,
-             frame_timer_clock(&a->timer), a->cutoff, a->cutoff == 0 ? " (exact)" : "");
+             frame_timer_clock(&a->timer), a->cutoff, a->cutoff == 0 ? " (exact)" : "", paused ? " | paused" : "");
     platform_set_title(title);
     log_debug("window: %s", title);
 }
@@ -158,7 +158,7 @@ static bool handle_key(app *a, const app_desc *desc, app_window *w, int key, boo
 {
     const key_binding *b = keys_find(key, a->cli->program);
     if (b && app_window_key(w, a, b->action))
-        return true;
+        return true; /* the window's own keys (app_window.c) */
     switch (b ? b->action : KEY_ACTION_CHAPTER) {
     case KEY_ACTION_CHAPTER:
         if (b && desc->key)
@@ -231,7 +231,7 @@ static void record_title(const app *a, loop *l, double now)
         l->title_n++;
     }
     if (now - l->title_clock > 0.5 && l->title_n > 0) {
-        update_title(a, &l->title_sum, l->title_n);
+        update_title(a, &l->title_sum, l->title_n, l->paused);
         frame_times *avg = &l->window.times; /* the overlay's figures */
         *avg = l->title_sum;
         for (int k = 0; k < avg->count; k++)

@@ -63,6 +63,7 @@ typedef struct app_window {
     const fbo *shown;  /* the last frame's picture: the target or the composed comparison */
     frame_times times; /* the overlay's figures: the timer's frames averaged over half a second */
     long objects_marked;
+    double badge_until; /* platform_time() until which the pause badge shows */
 } app_window;
 
 bool app_window_create(app_window *w, app *a, const cli_options *opt);

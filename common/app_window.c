@@ -21,6 +21,7 @@
 #define DIVIDER_STEP 0.05f
 #define DIVIDER_GRAB_PIXELS 8.0
 #define LIGHTS_MAX 65536
+#define PAUSE_BADGE_SECONDS 2.0
 
 bool app_window_create(app_window *w, app *a, const cli_options *opt)
 {
@@ -71,7 +72,7 @@ void app_window_move(app_window *w, app *a, double dt)
     if (m.held[INPUT_BUTTON_LEFT] && w->dragging_divider)
         w->divider = fminf(fmaxf((float)(m.x / a->width), 0.0f), 1.0f);
     else if (m.held[INPUT_BUTTON_LEFT] && !m.pressed[INPUT_BUTTON_LEFT])
-        camera_orbit(c, -(float)m.dx * ORBIT_RADIANS_PER_PIXEL, -(float)m.dy * ORBIT_RADIANS_PER_PIXEL);
+        camera_orbit(c, -(float)m.dx * ORBIT_RADIANS_PER_PIXEL, (float)m.dy * ORBIT_RADIANS_PER_PIXEL); /* grab the world */
     if (m.held[INPUT_BUTTON_RIGHT] && !m.pressed[INPUT_BUTTON_RIGHT])
         camera_look(c, -(float)m.dx * LOOK_RADIANS_PER_PIXEL, -(float)m.dy * LOOK_RADIANS_PER_PIXEL);
     if (m.scroll != 0.0)
@@ -140,6 +141,7 @@ bool app_window_key(app_window *w, app *a, key_action action)
     case KEY_ACTION_LIGHTS_HALF: scale_lights(a, false); return true;
     case KEY_ACTION_OVERLAY: w->overlay_on = !w->overlay_on; return true;
     case KEY_ACTION_KEY_LIST: w->key_list_on = !w->key_list_on; return true;
+    case KEY_ACTION_PAUSE: w->badge_until = platform_time() + PAUSE_BADGE_SECONDS; return false; /* the loop pauses */
     case KEY_ACTION_COMPARE:
         w->compare = (compare_mode)((w->compare + 1) % COMPARE_MODE_COUNT);
         log_info("compare: %s", compare_mode_name(w->compare));
@@ -274,7 +276,7 @@ bool app_window_save(const fbo *f, const char *path)
     return ok;
 }
 
-/* The picture, then the overlay, the key list or the pause badge over it: what the window shows
+/* The picture, then the overlay, the key list or, for PAUSE_BADGE_SECONDS after Space, a badge: what the window shows
  * (and what a script's screenshot reads). NULL when nothing shows it (headless, no script). */
 const fbo *app_window_display(app_window *w, const app *a, bool paused)
 {
@@ -292,8 +294,9 @@ const fbo *app_window_display(app_window *w, const app *a, bool paused)
     if (w->overlay_on) {
         app_window_overlay_text(w, a, paused, text, sizeof text);
         overlay_draw(&w->text, w->display.id, a->width, a->height, text, OVERLAY_TOP_LEFT);
-    } else if (paused && !w->key_list_on) {
-        overlay_draw(&w->text, w->display.id, a->width, a->height, "PAUSED (Space resumes)", OVERLAY_TOP_LEFT);
+    } else if (platform_time() < w->badge_until && !w->key_list_on) {
+        overlay_draw(&w->text, w->display.id, a->width, a->height, paused ? "PAUSED (Space resumes)" : "RESUMED",
+                     OVERLAY_TOP_LEFT);
     }
     if (w->key_list_on) {
         FILE *f = fmemopen(text, sizeof text - 1, "w");

@@ -8,7 +8,7 @@
 #define POLE_MARGIN 0.035f /* radians (2 degrees) kept between a view direction and the up axis */
 #define ZOOM_BASE 0.85f
 
-/* Turns v about `up` by yaw, then away from `up` by -pitch, keeping its length and never closer
+/* Turns v about `up` by yaw, then towards `up` by pitch, keeping its length and never closer
  * to the up axis than POLE_MARGIN (past the pole the view would flip). */
 static void turn(vec3 v, const vec3 up_in, float yaw, float pitch)
 {
@@ -31,7 +31,7 @@ void camera_orbit(scene_camera *c, float yaw, float pitch)
 {
     vec3 offset;
     glm_vec3_sub(c->eye, c->target, offset);
-    turn(offset, c->up, yaw, -pitch); /* dragging up raises the eye: the view tilts down */
+    turn(offset, c->up, yaw, pitch);
     glm_vec3_add(c->target, offset, c->eye);
 }
 

@@ -2,8 +2,10 @@
  * Every function changes a scene_camera in place; angles in radians, distances in world units.
  *
  *   camera_orbit(c, yaw, pitch)       the eye turns around the target: yaw about the up axis, pitch
- *                                     towards it (never over the pole); the distance is kept
- *   camera_look(c, yaw, pitch)        the target turns around the eye (fly mode's mouse look)
+ *                                     towards it, raising the eye (never over the pole); the
+ *                                     distance is kept
+ *   camera_look(c, yaw, pitch)        the target turns around the eye (fly mode's mouse look);
+ *                                     positive yaw turns left, positive pitch looks up
  *   camera_fly(c, forward, right)     eye and target move together along the view direction and
  *                                     its right-hand side
  *   camera_zoom(c, steps)             the eye's distance to the target times 0.85^steps, never

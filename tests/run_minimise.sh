@@ -16,13 +16,9 @@ imgdiff=$1 outdir=$2 golden_dir=$3
 shift 3
 fail=0
 tmp=$(mktemp -d)
-xvfb_pid="" twm_pid=""
-cleanup() {
-  [ -n "$twm_pid" ] && kill "$twm_pid" 2>/dev/null && wait "$twm_pid" 2>/dev/null
-  [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null && wait "$xvfb_pid" 2>/dev/null
-  rm -rf "$tmp"
-}
-trap cleanup EXIT
+x11_tmp=$tmp
+. "$(dirname "$0")/x11.sh"
+trap 'x11_stop; rm -rf "$tmp"' EXIT
 
 # 1. Command line: rejected with one line wherever it cannot work.
 # usage CODE STDERR_SUBSTRING ARGS...
@@ -45,27 +41,8 @@ usage 2 "bad --minimise-cycle 'x'" "$1" --minimise-cycle x
 usage 2 "bad --minimise-cycle '-1'" "$1" --minimise-cycle -1
 [ "$fail" -eq 0 ] || exit 1
 
-for tool in Xvfb twm; do
-  if ! command -v "$tool" >/dev/null 2>&1; then
-    echo "skip: $tool is not installed (scripts/install-deps.sh)"
-    exit 77
-  fi
-done
-
-# Xvfb picks a free display itself and writes its number once it accepts connections.
-Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp -noreset 3>"$tmp/display" 2>"$tmp/xvfb.log" &
-xvfb_pid=$!
-for _ in $(seq 100); do
-  grep -q '^[0-9]' "$tmp/display" 2>/dev/null && break
-  kill -0 "$xvfb_pid" 2>/dev/null || break
-  sleep 0.05
-done
-if ! grep -q '^[0-9]' "$tmp/display" 2>/dev/null; then
-  echo "FAIL: Xvfb did not start: $(tail -2 "$tmp/xvfb.log")"
-  exit 1
-fi
-export DISPLAY=":$(head -1 "$tmp/display")"
-unset WAYLAND_DISPLAY
+x11_missing && exit 77
+x11_start || exit 1
 
 # 2. No window manager yet: glfwIconifyWindow does nothing, and the run must say so and skip.
 "$1" --size 320x240 --frames 2 --paused --minimise-cycle 1 >/dev/null 2>"$tmp/err"
@@ -81,31 +58,7 @@ if [ "$rc" -ne 77 ] || ! grep -qxF "no window manager: cannot minimise" "$tmp/er
 fi
 echo "ok   no window manager -> 77"
 
-# twm's defaults ask the user to place each new window and use fonts Xvfb may lack.
-cat >"$tmp/twmrc" <<'EOF'
-RandomPlacement
-UsePPosition "on"
-TitleFont "fixed"
-ResizeFont "fixed"
-MenuFont "fixed"
-IconFont "fixed"
-IconManagerFont "fixed"
-EOF
-LC_ALL=C twm -f "$tmp/twmrc" >"$tmp/twm.log" 2>&1 &
-twm_pid=$!
-# twm marks the root window once it manages the screen; without xprop, give it a second.
-if command -v xprop >/dev/null 2>&1; then
-  for _ in $(seq 100); do
-    xprop -root 2>/dev/null | grep -q _MIT_PRIORITY_COLORS && break
-    sleep 0.05
-  done
-else
-  sleep 1
-fi
-if ! kill -0 "$twm_pid" 2>/dev/null; then
-  echo "FAIL: twm did not start: $(tail -2 "$tmp/twm.log")"
-  exit 1
-fi
+x11_start_twm || exit 1
 
 # 3. Minimise and restore three times, then the usual frames and the screenshot.
 mkdir -p "$outdir"
