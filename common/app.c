@@ -95,6 +95,7 @@ static int print_gl_info(const cli_options *opt, const char *program)
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     printf("gl: context=%d.%d core (the newest the driver gave, asking for 4.6 down to 3.3)\n", major, minor);
+    printf("gl: compute=%s (compute shaders: core since 4.3)\n", GLAD_GL_VERSION_4_3 ? "yes" : "no");
     platform_destroy();
     return EXIT_CODE_OK;
 }

@@ -55,6 +55,11 @@ max=$(env -u DISPLAY "$bin" --headless --gl-info 2>/dev/null | sed -n 's/.*max_w
 ctx=$(env -u DISPLAY "$bin" --headless --gl-info 2>/dev/null | sed -n 's/^gl: context=\([0-9]*\)\.\([0-9]*\) core.*/\1\2/p')
 if [ -n "$ctx" ] && [ "$ctx" -ge 33 ]; then pass=$((pass + 1)); echo "ok   [--gl-info] context ${ctx:0:1}.${ctx:1}"
 else fail=$((fail + 1)); echo "FAIL [--gl-info] context '$ctx' (want a core version >= 3.3)"; fi
+# Compute shaders are offered exactly where the context is 4.3 or newer (the loader's own flag).
+compute=$(env -u DISPLAY "$bin" --headless --gl-info 2>/dev/null | sed -n 's/^gl: compute=\([a-z]*\).*/\1/p')
+want=no; [ -n "$ctx" ] && [ "$ctx" -ge 43 ] && want=yes
+if [ "$compute" = "$want" ]; then pass=$((pass + 1)); echo "ok   [--gl-info] compute=$compute for ${ctx:0:1}.${ctx:1}"
+else fail=$((fail + 1)); echo "FAIL [--gl-info] compute='$compute', expected $want for context $ctx"; fi
 expect 2 "larger than this GL allows" -- --headless --size "$((max + 1))x16" --scene "$src/assets/scenes/default.scene"
 # The screenshot's format follows its extension; an unknown one is refused before any rendering.
 expect 2 "unknown image format" -- --headless --size 32x24 --screenshot "$tmp/shot.gif"
