@@ -84,7 +84,7 @@ static bool frame(app *a)
     }
 
     /* 3. shading: every object, each fragment looping over its lights */
-    const forward_options shade = {.light_lists = o.light_lists, .count_pixels = a->options->bench};
+    const forward_options shade = {.light_lists = o.light_lists, .count_pixels = a->count_pixels};
     if (!forward_draw_shaded(&state.fwd, gs, shade))
         return false;
     a->shaded_pixels = forward_shaded_pixels(&state.fwd);

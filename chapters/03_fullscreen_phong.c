@@ -17,19 +17,25 @@
  * = lights that reach this pixel / lights looped over. With the city's 757 lights most pixels are
  * near black. Chapter 04 skips those zeros before the shader runs.
  *
+ * The overdraw view counts what the loop really evaluates: every light at every covered pixel (the
+ * heat map of shaders/heat.glsl, one flat colour; compare chapter 07's). The volumes view draws each
+ * light's sphere at its radius as lines: the only place its shading can be non-zero.
+ *
  * Try: --view reach --cutoff 0.1 (each light's reach as a grey step), then --cutoff 0 (every light
  * reaches every pixel: white); --bench --lights 256 against --lights 16 (the cost grows with the
  * lights even where they do not reach); R for forward, whose picture this must equal.
  * Read docs/03_fullscreen_phong.md alongside.
  */
 #include "app.h"
+#include "debug_views.h"
 #include "deferred_fullscreen.h"
 #include "gbuffer.h"
 #include "log.h"
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
-/* lit: the lighting pass; reach: the share of its light loop that does any work (key V). */
-static const char *const views[] = {"lit", "reach", NULL};
+/* lit: the lighting pass; reach: the share of its light loop that does any work; overdraw and
+ * volumes: the debug views of every chapter from here on (key V). */
+static const char *const views[] = {"lit", "reach", "overdraw", "volumes", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
@@ -43,13 +49,16 @@ static struct {
     gbuffer gbuf;
     deferred_fullscreen lighting; /* the lighting pass */
     deferred_fullscreen reach;    /* the same loop, counting the lights that reach each pixel */
+    deferred_fullscreen overdraw; /* the same loop, counting the lights it evaluates */
+    debug_views views;            /* --view volumes */
 } state;
 
 static bool init(app *a)
 {
     return gbuffer_create(&state.gbuf, a->width, a->height) &&
            deferred_fullscreen_create(&state.lighting, NULL) &&
-           deferred_fullscreen_create(&state.reach, "VIEW_REACH 1");
+           deferred_fullscreen_create(&state.reach, "VIEW_REACH 1") &&
+           deferred_fullscreen_create(&state.overdraw, "VIEW_OVERDRAW 1") && debug_views_create(&state.views);
 }
 
 static bool resize(app *a) { return gbuffer_resize(&state.gbuf, a->width, a->height); }
@@ -77,17 +86,23 @@ static bool frame(app *a)
         return false;
 
     /* 2. lighting pass: a full-screen triangle into the target, all lights per pixel */
-    deferred_fullscreen *pass = app_view_is(a, "reach") ? &state.reach : &state.lighting;
-    const deferred_fullscreen_options options = {.count_pixels = a->options->bench};
+    deferred_fullscreen *pass = app_view_is(a, "reach")      ? &state.reach
+                                : app_view_is(a, "overdraw") ? &state.overdraw
+                                                             : &state.lighting;
+    const deferred_fullscreen_options options = {.count_pixels = a->count_pixels};
     if (!deferred_fullscreen_render(pass, &state.gbuf, &a->gs, a->target.id, options))
         return false;
     a->shaded_pixels = deferred_fullscreen_shaded_pixels(pass);
-    return true;
+    /* the volumes view: each light's sphere at its radius, as lines over the picture */
+    return !app_view_is(a, "volumes") ||
+           debug_views_draw_volumes(&state.views, &state.gbuf, &a->gs, a->target.id, NULL);
 }
 
 static void cleanup(app *a)
 {
     (void)a;
+    debug_views_destroy(&state.views);
+    deferred_fullscreen_destroy(&state.overdraw);
     deferred_fullscreen_destroy(&state.reach);
     deferred_fullscreen_destroy(&state.lighting);
     gbuffer_destroy(&state.gbuf);

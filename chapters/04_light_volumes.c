@@ -20,9 +20,12 @@
  *     (the hard circles), others shade pixels they cannot reach. Chapter 05 solves each radius.
  *   - blending is off: a volume fragment REPLACES the pixel, so where two spheres overlap only the
  *     light drawn last survives (the straight seams between two lights). Chapter 06 adds them up.
- * Read docs/04_light_volumes.md alongside.
+ * V shows the debug views (common/debug_views.c): overdraw, the volumes' fragments per pixel as a
+ * heat map, drawn with this pass's faces but counted by additive blending; volumes, the spheres as
+ * lines. Read docs/04_light_volumes.md alongside.
  */
 #include "app.h"
+#include "debug_views.h"
 #include "gbuffer.h"
 #include "light_volumes.h"
 #include "log.h"
@@ -31,6 +34,7 @@
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const scales[] = {"inradius", "none", NULL};
+static const char *const views[] = {"lit", "overdraw", "volumes", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
@@ -38,6 +42,7 @@ static const cli_desc cli = {
     .summary =
         "Chapter 04: one instanced sphere per light; only the pixels it covers are shaded.",
     .renderers = renderers,
+    .views = views,
     .extras =
         {
             {"radius", "R", "radius of every light volume (chapter 05 solves one per light)",
@@ -55,6 +60,7 @@ static struct {
     light_volumes lv; /* the programs (compiled FIXED_RADIUS, OVERWRITE) and the icosphere */
     float radius;     /* of every volume */
     bool unscaled;    /* draw the inscribed mesh at radius r: faceted lights */
+    debug_views views; /* --view overdraw and volumes */
 } state;
 
 static bool init(app *a)
@@ -64,24 +70,25 @@ static bool init(app *a)
         return false;
     state.radius = (float)radius;
     state.unscaled = strcmp(app_extra(a, "scale"), "none") == 0;
+    a->pass_state = &volume_pass; /* the overlay shows it */
     return gbuffer_create(&state.g, a->width, a->height) &&
-           light_volumes_create(&state.lv, "FIXED_RADIUS 1\nOVERWRITE 1");
+           light_volumes_create(&state.lv, "FIXED_RADIUS 1\nOVERWRITE 1") && debug_views_create(&state.views);
 }
 
 static bool resize(app *a) { return gbuffer_resize(&state.g, a->width, a->height); }
 
-/* 2b. one instance of the icosphere per light, all in one draw call */
-static void draw_volumes(app *a)
+/* 2b. one instance of the icosphere per light, all in one draw call, with the state `pass` */
+static void draw_volumes(app *a, light_volumes_view view, const gl_pass_state *pass)
 {
     const gpu_scene *gs = &a->gs;
-    light_volumes_bind(&state.lv, &state.g, gs, LIGHT_VOLUMES_VIEW_LIT);
+    light_volumes_bind(&state.lv, &state.g, gs, view);
     glUniform1f(state.lv.u_fixed_radius, state.radius);
     glUniform1f(state.lv.u_mesh_scale, state.unscaled ? 1.0f : state.lv.mesh_scale);
-    gl_pass_state_apply(&volume_pass);
-    gl_samples_begin(a->query, a->options->bench);
+    gl_pass_state_apply(pass);
+    gl_samples_begin(a->query, a->count_pixels);
     glBindVertexArray(state.lv.sphere.vao);
     glDrawElementsInstanced(GL_TRIANGLES, state.lv.sphere.index_count, GL_UNSIGNED_INT, NULL, gs->light_count);
-    a->shaded_pixels = gl_samples_end(a->query, a->options->bench);
+    a->shaded_pixels = gl_samples_end(a->query, a->count_pixels);
     glBindVertexArray(0);
     gl_pass_state_reset();
 }
@@ -95,6 +102,16 @@ static bool frame(app *a)
     if (!gbuffer_render(&state.g, &a->gs))
         return false;
 
+    /* the overdraw view: the same volumes, faces and depth state, each fragment counted (+1) */
+    if (app_view_is(a, "overdraw")) {
+        gl_pass_state count_pass;
+        if (!debug_views_begin_overdraw(&state.views, &state.g, &volume_pass, &count_pass))
+            return false;
+        if (a->gs.light_count > 0)
+            draw_volumes(a, LIGHT_VOLUMES_VIEW_OVERDRAW, &count_pass);
+        return debug_views_end_overdraw(&state.views, a->target.id);
+    }
+
     /* 2. lighting pass, straight into the target: 2a. ambient at every covered pixel */
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
@@ -102,8 +119,12 @@ static bool frame(app *a)
     glClear(GL_COLOR_BUFFER_BIT);
     light_volumes_draw_ambient(&state.lv, &state.g, &a->gs);
     if (a->gs.light_count > 0)
-        draw_volumes(a);
-    return gl_check("04 frame");
+        draw_volumes(a, LIGHT_VOLUMES_VIEW_LIT, &volume_pass);
+    /* the volumes view: the spheres as drawn (radius, mesh scale), as lines over the picture */
+    const debug_views_volumes drawn = {.fixed_radius = state.radius, .unscaled = state.unscaled};
+    return gl_check("04 frame") &&
+           (!app_view_is(a, "volumes") ||
+            debug_views_draw_volumes(&state.views, &state.g, &a->gs, a->target.id, &drawn));
 }
 
 static bool key(app *a, int k)
@@ -119,6 +140,7 @@ static bool key(app *a, int k)
 static void cleanup(app *a)
 {
     (void)a;
+    debug_views_destroy(&state.views);
     light_volumes_destroy(&state.lv);
     gbuffer_destroy(&state.g);
 }

@@ -21,15 +21,18 @@
  * --cutoff (or the [ ] keys) moves it: a larger cut-off, smaller volumes, faster, a brighter ring.
  *
  * Still wrong on purpose: no blending, so where two volumes overlap the light drawn last wins,
- * now along the true radii. Chapter 06 adds the lights up. Read docs/05_attenuation_radius.md.
+ * now along the true radii. Chapter 06 adds the lights up. V also shows the debug views of
+ * common/debug_views.c: overdraw (fragments per pixel, a heat map) and volumes (the spheres as
+ * lines, at the solved radii). Read docs/05_attenuation_radius.md.
  */
 #include "app.h"
+#include "debug_views.h"
 #include "gbuffer.h"
 #include "light_volumes.h"
 #include "log.h"
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
-static const char *const views[] = {"lit", "ring", NULL};
+static const char *const views[] = {"lit", "ring", "overdraw", "volumes", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
@@ -47,12 +50,15 @@ static struct {
     gbuffer g;
     light_volumes lv;     /* compiled OVERWRITE: each fragment writes its pixel */
     double logged_cutoff; /* radii are logged (with --verbose) when the cut-off changes */
+    debug_views views;    /* --view overdraw and volumes */
 } state;
 
 static bool init(app *a)
 {
     state.logged_cutoff = -1.0;
-    return gbuffer_create(&state.g, a->width, a->height) && light_volumes_create(&state.lv, "OVERWRITE 1");
+    a->pass_state = &volume_pass; /* the overlay shows it */
+    return gbuffer_create(&state.g, a->width, a->height) && light_volumes_create(&state.lv, "OVERWRITE 1") &&
+           debug_views_create(&state.views);
 }
 
 static bool resize(app *a) { return gbuffer_resize(&state.g, a->width, a->height); }
@@ -71,6 +77,19 @@ static void log_radii(const app *a)
     state.logged_cutoff = a->cutoff;
 }
 
+/* 2b. every volume at its own radius, with the state `pass`: the finite volumes in one instanced
+ * draw, then the full-screen ones */
+static bool draw_volumes(app *a, light_volumes_view view, const gl_pass_state *pass)
+{
+    if (!light_volumes_sort(&state.lv, &a->gs))
+        return false;
+    light_volumes_bind(&state.lv, &state.g, &a->gs, view);
+    gl_samples_begin(a->query, a->count_pixels);
+    light_volumes_draw(&state.lv, &a->gs, pass);
+    a->shaded_pixels = gl_samples_end(a->query, a->count_pixels);
+    return true;
+}
+
 static bool frame(app *a)
 {
     if (!app_renderer_is(a, "deferred"))
@@ -82,26 +101,35 @@ static bool frame(app *a)
     if (!gbuffer_render(&state.g, &a->gs))
         return false;
 
-    /* 2. lighting pass, straight into the target: ambient, then every volume at its own radius
-     * (finite volumes in one instanced draw, then the full-screen ones) */
+    /* the overdraw view: the same volumes, faces and depth state, each fragment counted (+1) */
+    if (app_view_is(a, "overdraw")) {
+        gl_pass_state count_pass;
+        if (!debug_views_begin_overdraw(&state.views, &state.g, &volume_pass, &count_pass))
+            return false;
+        if (!draw_volumes(a, LIGHT_VOLUMES_VIEW_OVERDRAW, &count_pass))
+            return false;
+        return debug_views_end_overdraw(&state.views, a->target.id);
+    }
+
+    /* 2. lighting pass, straight into the target: ambient, then every volume at its own radius */
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     light_volumes_draw_ambient(&state.lv, &state.g, &a->gs);
-    if (!light_volumes_sort(&state.lv, &a->gs))
+    const light_volumes_view view = app_view_is(a, "ring") ? LIGHT_VOLUMES_VIEW_RING : LIGHT_VOLUMES_VIEW_LIT;
+    if (!draw_volumes(a, view, &volume_pass))
         return false;
-    light_volumes_bind(&state.lv, &state.g, &a->gs,
-                       app_view_is(a, "ring") ? LIGHT_VOLUMES_VIEW_RING : LIGHT_VOLUMES_VIEW_LIT);
-    gl_samples_begin(a->query, a->options->bench);
-    light_volumes_draw(&state.lv, &a->gs, &volume_pass);
-    a->shaded_pixels = gl_samples_end(a->query, a->options->bench);
-    return gl_check("05 frame");
+    /* the volumes view: the spheres at their solved radii, as lines over the picture */
+    return gl_check("05 frame") &&
+           (!app_view_is(a, "volumes") ||
+            debug_views_draw_volumes(&state.views, &state.g, &a->gs, a->target.id, NULL));
 }
 
 static void cleanup(app *a)
 {
     (void)a;
+    debug_views_destroy(&state.views);
     light_volumes_destroy(&state.lv);
     gbuffer_destroy(&state.g);
 }

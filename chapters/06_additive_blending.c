@@ -23,14 +23,18 @@
  *   none      clamp to [0, 1]: the forward renderer's transform (the default, checked against it)
  *   exposure  multiply by --exposure first (darker or brighter), then clamp
  *   reinhard  x / (1 + x) after the exposure: bright overlaps roll off instead of clipping
- * Read docs/06_additive_blending.md alongside.
+ * V shows the debug views (common/debug_views.c): overdraw counts the fragments in the same buffer
+ * (an rgba8 one stops counting at 16) and shows them as a heat map; volumes draws the spheres as
+ * lines. Read docs/06_additive_blending.md alongside.
  */
 #include "app.h"
+#include "debug_views.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
 #include "log.h"
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
+static const char *const views[] = {"lit", "overdraw", "volumes", NULL};
 static const char *const accum_names[] = {"rgba16f", "rgba8", "rgba32f", NULL};
 static const GLenum accum_formats[] = {GL_RGBA16F, GL_RGBA8, GL_RGBA32F};
 static const char *const tonemaps[] = {"none", "exposure", "reinhard", NULL};
@@ -41,6 +45,7 @@ static const cli_desc cli = {
     .summary = "Chapter 06: lights summed with additive blending in a float buffer, then "
                "tone mapped once.",
     .renderers = renderers,
+    .views = views,
     .extras =
         {
             {"accum", "FORMAT", "accumulation buffer format", accum_names, "rgba16f"},
@@ -56,6 +61,7 @@ static const gl_pass_state volume_pass = {.blend = {GL_ONE, GL_ONE}, .cull = GL_
 static struct {
     gbuffer g;
     deferred_volumes dv; /* the volumes, the accumulation buffer, the present pass */
+    debug_views views;   /* --view volumes */
     int accum;           /* index into accum_formats */
     deferred_volumes_tonemap tonemap;
     double exposure;
@@ -64,11 +70,13 @@ static struct {
 static bool init(app *a)
 {
     state.accum = cli_choice_index(accum_names, app_extra(a, "accum"));
+    a->pass_state = &volume_pass; /* the overlay shows it */
     state.tonemap = (deferred_volumes_tonemap)cli_choice_index(tonemaps, app_extra(a, "tonemap"));
     if (!app_extra_number(a, "exposure", 1e-6, 1e6, &state.exposure))
         return false;
     return gbuffer_create(&state.g, a->width, a->height) &&
-           deferred_volumes_create(&state.dv, &state.g, accum_formats[state.accum]);
+           deferred_volumes_create(&state.dv, &state.g, accum_formats[state.accum]) &&
+           debug_views_create(&state.views);
 }
 
 static bool resize(app *a)
@@ -92,12 +100,15 @@ static bool frame(app *a)
         .accum_format = accum_formats[state.accum],
         .tonemap = state.tonemap,
         .exposure = (float)state.exposure,
-        .count_pixels = a->options->bench,
+        .view = app_view_is(a, "overdraw") ? LIGHT_VOLUMES_VIEW_OVERDRAW : LIGHT_VOLUMES_VIEW_LIT,
+        .count_pixels = a->count_pixels,
     };
     if (!deferred_volumes_render(&state.dv, &state.g, &a->gs, a->target.id, &f))
         return false;
     a->shaded_pixels = deferred_volumes_shaded_pixels(&state.dv);
-    return true;
+    /* the volumes view: every sphere as lines over the picture */
+    return !app_view_is(a, "volumes") ||
+           debug_views_draw_volumes(&state.views, &state.g, &a->gs, a->target.id, NULL);
 }
 
 static bool key(app *a, int k)
@@ -121,6 +132,7 @@ static bool key(app *a, int k)
 static void cleanup(app *a)
 {
     (void)a;
+    debug_views_destroy(&state.views);
     deferred_volumes_destroy(&state.dv);
     gbuffer_destroy(&state.g);
 }

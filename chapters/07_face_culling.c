@@ -19,10 +19,12 @@
  *   --cull back   front faces with GL_LEQUAL: right from outside, but when the camera enters a
  *                 sphere its front faces are behind the eye and the light vanishes
  *   --depth-clamp off   the far plane clips back faces: lights vanish near the far plane
- * --view overdraw shows how many lighting fragments each pixel ran (1/16 grey each); --bench
- * prints them as shaded_pixels. Read docs/07_face_culling.md alongside.
+ * --view overdraw shows how many lighting fragments ran at each pixel as a heat map; --bench prints
+ * their total as shaded_pixels. --view volumes draws the spheres as lines over the picture
+ * (common/debug_views.c). Read docs/07_face_culling.md alongside.
  */
 #include "app.h"
+#include "debug_views.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
 #include "log.h"
@@ -30,7 +32,7 @@
 #include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
-static const char *const views[] = {"lit", "overdraw", NULL};
+static const char *const views[] = {"lit", "overdraw", "volumes", NULL};
 static const char *const culls[] = {"front", "back", "none", NULL};
 static const char *const on_off[] = {"on", "off", NULL};
 
@@ -65,6 +67,7 @@ static const gl_pass_state both_faces_pass = {.blend = {GL_ONE, GL_ONE}};
 static struct {
     gbuffer g;
     deferred_volumes dv;
+    debug_views views;  /* --view volumes */
     gl_pass_state pass; /* volume_pass, or one of the wrong ones */
     int cull;           /* index into culls */
 } state;
@@ -80,8 +83,9 @@ static void set_cull(int cull, bool depth_clamp)
 static bool init(app *a)
 {
     set_cull(cli_choice_index(culls, app_extra(a, "cull")), strcmp(app_extra(a, "depth-clamp"), "on") == 0);
+    a->pass_state = &state.pass; /* the overlay shows it, X and Z included */
     return gbuffer_create(&state.g, a->width, a->height) &&
-           deferred_volumes_create(&state.dv, &state.g, GL_RGBA16F);
+           deferred_volumes_create(&state.dv, &state.g, GL_RGBA16F) && debug_views_create(&state.views);
 }
 
 static bool resize(app *a)
@@ -102,12 +106,14 @@ static bool frame(app *a)
     const deferred_volumes_frame f = {
         .volume_state = &state.pass,
         .view = app_view_is(a, "overdraw") ? LIGHT_VOLUMES_VIEW_OVERDRAW : LIGHT_VOLUMES_VIEW_LIT,
-        .count_pixels = a->options->bench,
+        .count_pixels = a->count_pixels,
     };
     if (!deferred_volumes_render(&state.dv, &state.g, &a->gs, a->target.id, &f))
         return false;
     a->shaded_pixels = deferred_volumes_shaded_pixels(&state.dv);
-    return true;
+    /* the volumes view: every sphere as lines over the picture */
+    return !app_view_is(a, "volumes") ||
+           debug_views_draw_volumes(&state.views, &state.g, &a->gs, a->target.id, NULL);
 }
 
 static bool key(app *a, int k)
@@ -128,6 +134,7 @@ static bool key(app *a, int k)
 static void cleanup(app *a)
 {
     (void)a;
+    debug_views_destroy(&state.views);
     deferred_volumes_destroy(&state.dv);
     gbuffer_destroy(&state.g);
 }

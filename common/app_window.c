@@ -218,7 +218,8 @@ static void put(char *out, size_t size, size_t *used, const char *fmt, ...)
 /* The frame's time split into the chapter's side and the compare pass. */
 static void put_times(const app_window *w, const app *a, char *out, size_t size, size_t *used)
 {
-    const frame_times *t = &w->times;
+    /* the half-second average; the last frame's times until there is one (a single headless frame) */
+    const frame_times *t = w->times.count > 0 ? &w->times : &a->timer.last;
     double compare_ms = 0.0;
     put(out, size, used, "passes (ms):");
     for (int k = 0; k < t->count; k++) {
@@ -248,7 +249,9 @@ int app_window_overlay_text(const app_window *w, const app *a, bool paused, char
     if (a->shaded_pixels >= 0)
         put(out, size, &used, "lighting fragments %ld = %.2f per pixel\n", a->shaded_pixels,
             (double)a->shaded_pixels / ((double)a->width * a->height));
-    if (a->pass_state) {
+    const char *name = a->cli->renderers ? a->cli->renderers[a->renderer] : "forward";
+    int id = renderer_find(name);
+    if (a->pass_state && (id < 0 || !renderer_table[id].forward)) { /* the chapter's own renderer */
         char pass[160];
         describe_pass(a->pass_state, pass, sizeof pass);
         put(out, size, &used, "lighting pass: %s\n", pass);

@@ -2,7 +2,8 @@
  * covered pixel of a G-buffer with every light (shaders/deferred_fullscreen.frag).
  *
  *   deferred_fullscreen_create(d, defines)         compile the lighting program (`defines`:
- *                                                  VIEW_REACH for chapter 03's reach view, or NULL)
+ *                                                  VIEW_REACH for chapter 03's reach view,
+ *                                                  VIEW_OVERDRAW for its overdraw view, or NULL)
  *   deferred_fullscreen_destroy(d)
  *   deferred_fullscreen_render(d, g, gs, target, options)
  *                                                  clear the framebuffer `target`'s colour to black

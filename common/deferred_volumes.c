@@ -43,6 +43,7 @@ bool deferred_volumes_create(deferred_volumes *dv, const gbuffer *g, GLenum accu
     dv->u_accum = glGetUniformLocation(dv->present_program, "u_accum");
     dv->u_tonemap = glGetUniformLocation(dv->present_program, "u_tonemap");
     dv->u_exposure = glGetUniformLocation(dv->present_program, "u_exposure");
+    dv->u_view = glGetUniformLocation(dv->present_program, "u_view");
     dv->query = gl_query_create();
     return gl_check("deferred_volumes_create");
 }
@@ -72,6 +73,7 @@ static void present(const deferred_volumes *dv, GLuint target, const deferred_vo
     glUniform1i(dv->u_accum, SHADER_UNIT_IMAGE);
     glUniform1i(dv->u_tonemap, (int)f->tonemap);
     glUniform1f(dv->u_exposure, f->exposure > 0.0f ? f->exposure : 1.0f);
+    glUniform1i(dv->u_view, (int)f->view);
     gl_draw_fullscreen();
     glBindTexture(GL_TEXTURE_2D, 0);
     glBindVertexArray(0);
@@ -99,7 +101,7 @@ bool deferred_volumes_render(deferred_volumes *dv, const gbuffer *g, const gpu_s
     light_volumes_draw(&dv->lv, gs, f->volume_state);
     dv->shaded_pixels = gl_samples_end(dv->query, f->count_pixels);
 
-    /* 3. present: tone map + display encoding of the sum */
+    /* 3. present: tone map + display encoding of the sum (overdraw view: the count as a heat map) */
     present(dv, target, f);
     return gl_check("deferred_volumes_render");
 }

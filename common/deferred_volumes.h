@@ -11,7 +11,10 @@
  *        from the G-buffer g (filled by gbuffer_render): clear the accumulation buffer, ambient,
  *        every light's volume with frame->volume_state (its blending adds the lights up), then the
  *        present pass (tone map, display encoding) into the framebuffer `target`; follows g's size
- *        and depth and frame->accum_format when they changed; leaves gl_pass_state_reset()'s state
+ *        and depth and frame->accum_format when they changed; leaves gl_pass_state_reset()'s state.
+ *        With frame->view LIGHT_VOLUMES_VIEW_OVERDRAW: no ambient, the buffer adds up one count per
+ *        lighting fragment, and the present pass shows the counts as a heat map (shaders/heat.glsl;
+ *        an rgba8 buffer clamps at 1, i.e. at SHADER_OVERDRAW_SCALE counts)
  *   deferred_volumes_shaded_pixels(dv)            lighting fragments kept in the last frame
  *                                                 (GL_SAMPLES_PASSED) when counted, else -1
  */
@@ -41,7 +44,7 @@ typedef struct deferred_volumes {
     fbo accum; /* colour: the sum of the lights; depth: the G-buffer's */
     GLenum accum_format;
     GLuint present_program;
-    GLint u_accum, u_tonemap, u_exposure;
+    GLint u_accum, u_tonemap, u_exposure, u_view;
     GLuint query;
     long shaded_pixels;
 } deferred_volumes;

@@ -27,16 +27,21 @@ static bool load_programs(light_volumes *lv, const char *defines)
     return true;
 }
 
+bool light_volumes_mesh_create(mesh *sphere, float *mesh_scale)
+{
+    mesh_data data;
+    if (!mesh_data_icosphere(&data, VOLUME_SUBDIVISIONS))
+        return false;
+    *mesh_scale = (float)(1.0 / mesh_data_inradius(&data));
+    bool ok = mesh_create(&data, sphere);
+    mesh_data_destroy(&data);
+    return ok;
+}
+
 bool light_volumes_create(light_volumes *lv, const char *defines)
 {
     memset(lv, 0, sizeof *lv);
-    mesh_data sphere;
-    if (!mesh_data_icosphere(&sphere, VOLUME_SUBDIVISIONS))
-        return false;
-    lv->mesh_scale = (float)(1.0 / mesh_data_inradius(&sphere));
-    bool ok = mesh_create(&sphere, &lv->sphere);
-    mesh_data_destroy(&sphere);
-    if (!ok || !load_programs(lv, defines)) {
+    if (!light_volumes_mesh_create(&lv->sphere, &lv->mesh_scale) || !load_programs(lv, defines)) {
         light_volumes_destroy(lv);
         return false;
     }

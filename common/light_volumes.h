@@ -6,6 +6,9 @@
  *                                         volume_ambient.frag, compiled with `defines`: OVERWRITE,
  *                                         FIXED_RADIUS), the volume mesh, the per-instance index
  *   light_volumes_destroy(lv)
+ *   light_volumes_mesh_create(sphere, mesh_scale)
+ *                                         the volume mesh alone and its scale 1 / inradius (the
+ *                                         volumes view draws it as lines, common/debug_views.c)
  *   light_volumes_draw_ambient(lv, g, gs) ambient light at every covered pixel (full-screen triangle)
  *   light_volumes_bind(lv, g, gs, view)   the volume program with the lights, the G-buffer and the
  *                                         camera bound; `view` is a light_volumes_view
@@ -32,7 +35,8 @@
 typedef enum light_volumes_view {
     LIGHT_VOLUMES_VIEW_LIT = SHADER_VIEW_LIT,           /* the shaded picture */
     LIGHT_VOLUMES_VIEW_RING = SHADER_VIEW_RING,         /* plus a line where each cut-off sphere meets a surface */
-    LIGHT_VOLUMES_VIEW_OVERDRAW = SHADER_VIEW_OVERDRAW, /* grey level = lighting fragments per pixel (1/16 each) */
+    LIGHT_VOLUMES_VIEW_OVERDRAW = SHADER_VIEW_OVERDRAW, /* 1 / SHADER_OVERDRAW_SCALE per lighting fragment, to be
+                                                           added up: the count behind the heat map */
 } light_volumes_view;
 
 typedef struct light_volumes {
@@ -48,6 +52,7 @@ typedef struct light_volumes {
 
 bool light_volumes_create(light_volumes *lv, const char *defines);
 void light_volumes_destroy(light_volumes *lv);
+bool light_volumes_mesh_create(mesh *sphere, float *mesh_scale);
 void light_volumes_draw_ambient(const light_volumes *lv, const gbuffer *g, const gpu_scene *gs);
 void light_volumes_bind(const light_volumes *lv, const gbuffer *g, const gpu_scene *gs, light_volumes_view view);
 bool light_volumes_sort(light_volumes *lv, const gpu_scene *gs);

@@ -7,7 +7,8 @@
  *   light texels (RGBA32F):  position.xyz + radius, radiance + 0, attenuation kc kl kq + 0
  *   object texels (RGBA32F): world matrix columns 0-3, normal matrix columns 4-6,
  *                            albedo + specular 7, shininess 8
- *   views and tone maps:     the values of the u_view and u_tonemap uniforms
+ *   views and tone maps:     the values of the u_view and u_tonemap uniforms; the overdraw view's
+ *                            count per fragment and the heat map's saturation count
  *   texture units:           where each pass binds its textures (GLSL 3.30 has no binding layout)
  */
 #ifndef COMMON_SHADER_LAYOUT_H
@@ -26,6 +27,8 @@
     X(GBUFFER_VIEW_NORMAL, 1)                                                                              \
     X(GBUFFER_VIEW_DEPTH, 2)                                                                               \
     X(GBUFFER_VIEW_SPECULAR, 3)                                                                            \
+    X(OVERDRAW_SCALE, 16)  /* the overdraw view adds 1 / 16 per lighting fragment */                       \
+    X(HEAT_MAX, 16)        /* heat map (shaders/heat.glsl): 16 and more look alike */                      \
     X(TONEMAP_NONE, 0)                                                                                     \
     X(TONEMAP_EXPOSURE, 1)                                                                                 \
     X(TONEMAP_REINHARD, 2)                                                                                 \

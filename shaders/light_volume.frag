@@ -14,7 +14,7 @@ flat in vec3 v_light_radiance;
 flat in vec3 v_light_attenuation;
 flat in float v_volume_radius;
 
-uniform int u_view; // SHADER_VIEW_LIT, _RING (lit + cut-off ring) or _OVERDRAW
+uniform int u_view; // SHADER_VIEW_LIT, _RING (lit + cut-off ring) or _OVERDRAW (one count per fragment)
 
 out vec4 o_color;
 
@@ -30,8 +30,9 @@ void main()
     float ring_width = 0.0;
     if (u_view == SHADER_VIEW_RING)
         ring_width = 1.5 * fwidth(d);
+    // Overdraw: this fragment ran, whatever it finds (background included); added up with blending.
     if (u_view == SHADER_VIEW_OVERDRAW) {
-        o_color = vec4(vec3(depth < 1.0 ? 1.0 / 16.0 : 0.0), 1.0);
+        o_color = vec4(vec3(1.0 / float(SHADER_OVERDRAW_SCALE)), 1.0);
         return;
     }
     if (depth >= 1.0 || d > v_volume_radius) {
