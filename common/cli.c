@@ -87,7 +87,7 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --falloff hard|windowed  how lights fade to their radius (default: the scene's, else hard):\n"
             "                           windowed multiplies by (1 - (d/r)^4)^2, so the cut-off leaves no step\n"
             "  --compare MODE           off|split|difference: forward left of a divider and this chapter's\n"
-            "                           renderer right of it, or |difference| x 16 as a heat map (key M)\n"
+            "                           renderer right of it, or their difference beyond 1/255 as a heat map (key M)\n"
             "  --overlay                the on-screen overlay from the start, also in --screenshot (key H)\n"
             "  --script FILE            timed keys and mouse events, as if typed (format:\n"
             "                           common/input_script.h; the tests drive the window with it)\n"

@@ -51,7 +51,6 @@ bool compare_compose(compare *c, const fbo *picture, compare_mode mode, int divi
     glUniform1i(glGetUniformLocation(c->program, "u_difference"), mode == COMPARE_DIFFERENCE);
     glUniform1i(glGetUniformLocation(c->program, "u_divider"), divider);
     glUniform1i(glGetUniformLocation(c->program, "u_divider_width"), COMPARE_DIVIDER_WIDTH);
-    glUniform1f(glGetUniformLocation(c->program, "u_gain"), COMPARE_GAIN);
     glUniform1i(glGetUniformLocation(c->program, "u_tolerance"), COMPARE_TOLERANCE_LEVELS);
     gl_draw_fullscreen();
     glBindTexture(GL_TEXTURE_2D, 0);

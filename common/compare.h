@@ -1,8 +1,9 @@
 /* compare.h - forward and the chapter's renderer in one picture, so "the same picture" can be seen:
  * a split screen (forward left of a movable divider, the chapter's renderer right of it) or their
- * difference (|a - b| x COMPARE_GAIN per channel, the largest channel as a heat map: black where
- * the two agree, i.e. differ by at most COMPARE_TOLERANCE_LEVELS 8-bit levels, the course's
- * tolerance for "the same picture").
+ * difference: black where the two agree, i.e. differ by at most COMPARE_TOLERANCE_LEVELS 8-bit
+ * levels in every channel (the course's "same picture"), elsewhere the largest channel's difference
+ * in levels through the overdraw views' heat map (shaders/heat.glsl: 1 level dark purple, 16 and
+ * more pale yellow, i.e. the difference magnified 16 times).
  *
  *   compare_create(c, width, height)     the forward picture's and the composed picture's targets
  *   compare_resize(c, width, height)
@@ -20,7 +21,6 @@
 
 #include "fbo.h"
 
-#define COMPARE_GAIN 16.0f
 #define COMPARE_TOLERANCE_LEVELS 1
 #define COMPARE_DIVIDER_WIDTH 2 /* pixels left of the divider column drawn white */
 

@@ -20,7 +20,7 @@ static const key_binding table[] = {
     {'-', "-", NULL, KEY_ACTION_LIGHTS_HALF, "halve the generated lights"},
     {'R', "R", NULL, KEY_ACTION_RENDERER, "next renderer (--renderer lists them; every chapter has forward)"},
     {'V', "V", NULL, KEY_ACTION_VIEW, "next view (--view lists them: G-buffer targets, debug views)"},
-    {'M', "M", NULL, KEY_ACTION_COMPARE, "compare with forward: split screen, difference (beyond 1/255, x16), off"},
+    {'M', "M", NULL, KEY_ACTION_COMPARE, "compare with forward: split screen, difference (beyond 1/255, as a heat map), off"},
     {',', ",", NULL, KEY_ACTION_DIVIDER_LEFT, "move the split's divider left (or drag it)"},
     {'.', ".", NULL, KEY_ACTION_DIVIDER_RIGHT, "move the split's divider right"},
     {'[', "[", NULL, KEY_ACTION_CUTOFF_HALF, "halve the attenuation cut-off"},

@@ -2,18 +2,13 @@
 // compare.frag - forward and the chapter's picture side by side, or their difference as a heat map.
 // Both inputs are the display-encoded 8-bit pictures the window would show: texelFetch, no filtering.
 
-// Black -> red -> yellow -> white as x goes 0 -> 1 -> 2 -> 3: small differences are already red.
-vec3 difference_color(float x)
-{
-    return clamp(vec3(x, x - 1.0, x - 2.0), 0.0, 1.0);
-}
+#include "heat.glsl"
 
 uniform sampler2D u_forward;
 uniform sampler2D u_picture;
 uniform bool u_difference;
 uniform int u_divider;       // split: first column of the right-hand (chapter) side
 uniform int u_divider_width; // white columns left of it
-uniform float u_gain;
 uniform int u_tolerance;     // levels
 
 out vec4 o_color;
@@ -27,7 +22,8 @@ void main()
         // In 8-bit levels; up to u_tolerance levels apart is the course's "same picture": black.
         vec3 levels = round(abs(f - p) * 255.0);
         float worst = max(max(levels.r, levels.g), levels.b);
-        o_color = vec4(worst > float(u_tolerance) ? difference_color(max(worst * u_gain / 255.0, 0.25)) : vec3(0.0), 1.0);
+        // Beyond it, the overdraw views' colour map: 1 level dark purple ... 16 and more pale yellow.
+        o_color = vec4(worst > float(u_tolerance) ? heat(int(worst)) : vec3(0.0), 1.0);
         return;
     }
     if (pixel.x >= u_divider - u_divider_width && pixel.x < u_divider)
