@@ -64,6 +64,9 @@ typedef struct app_window {
     frame_times times; /* the overlay's figures: the timer's frames averaged over half a second */
     long objects_marked;
     double badge_until; /* platform_time() until which the pause badge shows */
+    fbo ideal_target;   /* the scene's depth for the ideal count (forward, drawn when paused) */
+    long long ideal;    /* (pixel, light) pairs a perfect volume would shade; -1: not counted */
+    unsigned ideal_key; /* what the frame was when it was counted */
 } app_window;
 
 bool app_window_create(app_window *w, app *a, const cli_options *opt);
@@ -72,8 +75,8 @@ bool app_window_resize(app_window *w, const app *a);
 void app_window_move(app_window *w, app *a, double dt);
 bool app_window_key(app_window *w, app *a, key_action action);
 bool app_window_compare(app_window *w, app *a);
-const fbo *app_window_display(app_window *w, const app *a, bool paused);
-bool app_window_after_frame(app_window *w, const app *a, const fbo *shown, bool paused, int *rc);
+const fbo *app_window_display(app_window *w, app *a, bool paused);
+bool app_window_after_frame(app_window *w, app *a, const fbo *shown, bool paused, int *rc);
 int app_window_overlay_text(const app_window *w, const app *a, bool paused, char *out, size_t size);
 bool app_window_save(const fbo *f, const char *path);
 

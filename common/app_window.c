@@ -7,12 +7,14 @@
 #include "image.h"
 #include "input.h"
 #include "light.h"
+#include "light_work.h"
 #include "log.h"
 #include "platform.h"
 
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define ORBIT_RADIANS_PER_PIXEL 0.006f
@@ -37,11 +39,13 @@ bool app_window_create(app_window *w, app *a, const cli_options *opt)
         return false;
     w->have_script = opt->script != NULL;
     w->shown = &a->target;
+    w->ideal = -1;
     return true;
 }
 
 void app_window_destroy(app_window *w)
 {
+    fbo_destroy(&w->ideal_target);
     if (w->have_cmp)
         compare_destroy(&w->cmp);
     if (w->have_text)
@@ -53,6 +57,7 @@ void app_window_destroy(app_window *w)
 bool app_window_resize(app_window *w, const app *a)
 {
     fbo_destroy(&w->display);
+    fbo_destroy(&w->ideal_target);
     return !w->have_cmp || compare_resize(&w->cmp, a->width, a->height);
 }
 
@@ -172,6 +177,49 @@ bool app_window_compare(app_window *w, app *a)
     return true;
 }
 
+/* ---- the ideal work ------------------------------------------------------------------------ */
+
+/* FNV-1a over what decides the ideal count: camera, lights, cut-off, time, size. */
+static unsigned frame_key(const app *a)
+{
+    unsigned h = 2166136261u;
+    const unsigned char *parts[] = {(const void *)&a->scene.camera, (const void *)&a->cutoff, (const void *)&a->time,
+                                    (const void *)&a->width, (const void *)&a->height, (const void *)&a->gs.light_count};
+    const size_t sizes[] = {sizeof a->scene.camera, sizeof a->cutoff, sizeof a->time, sizeof a->width, sizeof a->height,
+                            sizeof a->gs.light_count};
+    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++)
+        for (size_t i = 0; i < sizes[k]; i++)
+            h = (h ^ parts[k][i]) * 16777619u;
+    return h;
+}
+
+/* The pairs a perfect light volume would shade (common/light_work.h), from the depth of a forward
+ * frame read back: a CPU count, so only while paused and only when the frame changed. */
+static void count_ideal(app_window *w, app *a)
+{
+    unsigned key = frame_key(a);
+    if (w->ideal >= 0 && key == w->ideal_key)
+        return;
+    w->ideal = -1;
+    const fbo_desc d = {.color_formats = {GL_RGBA8}, .color_count = 1, .depth_format = GL_DEPTH_COMPONENT32F,
+                        .name = "ideal count"};
+    size_t n = (size_t)a->width * (size_t)a->height;
+    float *depth = malloc(n * sizeof *depth);
+    double *positions = malloc(4 * n * sizeof *positions);
+    if (depth && positions && (w->ideal_target.id || fbo_create(&w->ideal_target, &d, a->width, a->height)) &&
+        renderers_draw(&a->renderers, RENDERER_FORWARD, &a->gs, w->ideal_target.id, (renderer_draw_options){0}, NULL)) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, w->ideal_target.id);
+        glReadPixels(0, 0, a->width, a->height, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        const float *vp = (const float *)a->gs.view.view_proj;
+        light_work_positions(depth, a->width, a->height, vp, positions);
+        w->ideal = light_work_ideal_pairs(positions, a->width, a->height, vp, a->gs.lights, a->gs.light_count);
+        w->ideal_key = key;
+    }
+    free(depth);
+    free(positions);
+}
+
 /* ---- overlay ------------------------------------------------------------------------------- */
 
 static const char *gl_name(GLenum e)
@@ -185,6 +233,7 @@ static const char *gl_name(GLenum e)
     case GL_GEQUAL: return "GEQUAL";
     case GL_EQUAL: return "EQUAL";
     case GL_ALWAYS: return "ALWAYS";
+    case GL_NOTEQUAL: return "NOTEQUAL";
     case GL_ONE: return "ONE";
     case GL_ZERO: return "ZERO";
     case GL_SRC_ALPHA: return "SRC_ALPHA";
@@ -193,13 +242,14 @@ static const char *gl_name(GLenum e)
     }
 }
 
-/* "cull front, depth GREATER (no writes), clamp, blend ONE+ONE" */
+/* "cull front, depth GREATER (no writes), clamp, blend ONE+ONE[, stencil NOTEQUAL 0]" */
 static int describe_pass(const gl_pass_state *s, char *out, size_t size)
 {
-    return snprintf(out, size, "cull %s, depth %s%s%s, blend %s%s%s", s->cull ? gl_name(s->cull) : "none",
+    return snprintf(out, size, "cull %s, depth %s%s%s, blend %s%s%s%s%s%s", s->cull ? gl_name(s->cull) : "none",
                     s->depth_func ? gl_name(s->depth_func) : "off", s->depth_write ? "" : " (no writes)",
                     s->depth_clamp ? ", clamp" : "", s->blend[0] ? gl_name(s->blend[0]) : "off", s->blend[0] ? "+" : "",
-                    s->blend[0] ? gl_name(s->blend[1]) : "");
+                    s->blend[0] ? gl_name(s->blend[1]) : "", s->stencil_func ? ", stencil " : "",
+                    s->stencil_func ? gl_name(s->stencil_func) : "", s->stencil_func ? " 0" : "");
 }
 
 /* Appends printf-style text at out[*used]; never overflows. */
@@ -246,9 +296,12 @@ int app_window_overlay_text(const app_window *w, const app *a, bool paused, char
         a->gs.culled_count, a->cutoff, a->cutoff == 0 ? ": exact" : "",
         a->gs.falloff == SHADER_FALLOFF_WINDOWED ? "windowed" : "hard");
     put_times(w, a, out, size, &used);
-    if (a->shaded_pixels >= 0)
-        put(out, size, &used, "lighting fragments %ld = %.2f per pixel\n", a->shaded_pixels,
-            (double)a->shaded_pixels / ((double)a->width * a->height));
+    if (a->shaded_pixels >= 0 && w->ideal > 0 && paused)
+        put(out, size, &used, "lighting fragments %ld = %.2f x the ideal %lld (pixel, light) pairs\n",
+            a->shaded_pixels, (double)a->shaded_pixels / (double)w->ideal, w->ideal);
+    else if (a->shaded_pixels >= 0)
+        put(out, size, &used, "lighting fragments %ld = %.2f per pixel (Space: pause to count the ideal)\n",
+            a->shaded_pixels, (double)a->shaded_pixels / ((double)a->width * a->height));
     const char *name = a->cli->renderers ? a->cli->renderers[a->renderer] : "forward";
     int id = renderer_find(name);
     if (a->pass_state && (id < 0 || !renderer_table[id].forward)) { /* the chapter's own renderer */
@@ -281,7 +334,7 @@ bool app_window_save(const fbo *f, const char *path)
 
 /* The picture, then the overlay, the key list or, for PAUSE_BADGE_SECONDS after Space, a badge: what the window shows
  * (and what a script's screenshot reads). NULL when nothing shows it (headless, no script). */
-const fbo *app_window_display(app_window *w, const app *a, bool paused)
+const fbo *app_window_display(app_window *w, app *a, bool paused)
 {
     if (!platform_is_windowed() && !w->have_script && !a->options->overlay)
         return NULL;
@@ -294,6 +347,8 @@ const fbo *app_window_display(app_window *w, const app *a, bool paused)
     glBlitFramebuffer(0, 0, a->width, a->height, 0, 0, a->width, a->height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     char text[2048];
+    if (w->overlay_on && paused)
+        count_ideal(w, a);
     if (w->overlay_on) {
         app_window_overlay_text(w, a, paused, text, sizeof text);
         overlay_draw(&w->text, w->display.id, a->width, a->height, text, OVERLAY_TOP_LEFT);
@@ -330,7 +385,7 @@ static bool script_objects(app_window *w, const script_event *e, int *rc)
     return false;
 }
 
-bool app_window_after_frame(app_window *w, const app *a, const fbo *shown, bool paused, int *rc)
+bool app_window_after_frame(app_window *w, app *a, const fbo *shown, bool paused, int *rc)
 {
     int first, count;
     input_script_range(&w->script, a->frame_index, &first, &count);
@@ -345,6 +400,8 @@ bool app_window_after_frame(app_window *w, const app *a, const fbo *shown, bool 
             }
             break;
         case SCRIPT_OVERLAY:
+            if (paused)
+                count_ideal(w, a);
             app_window_overlay_text(w, a, paused, text, sizeof text);
             for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n"))
                 printf("overlay: %s\n", line);

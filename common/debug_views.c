@@ -91,9 +91,10 @@ bool debug_views_draw_volumes(const debug_views *dv, const gbuffer *g, const gpu
         volumes = &solved;
     frame_timer_mark("volumes view");
     /* The deferred chapters write no depth into the target: copy the scene's from the G-buffer so
-     * that surfaces hide the lines (a depth blit needs equal formats: both DEPTH_COMPONENT32F). */
+     * that surfaces hide the lines (a depth blit needs equal formats: both DEPTH_COMPONENT32F; a
+     * G-buffer with a stencil keeps its depth's copy in that format). */
     int w = g->fbo.width, h = g->fbo.height;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, g->fbo.id);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, g->desc.stencil ? g->depth_copy.id : g->fbo.id);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, target);

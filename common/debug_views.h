@@ -1,4 +1,4 @@
-/* debug_views.h - the two debug views every chapter that lights the G-buffer (03-07) shows on V:
+/* debug_views.h - the two debug views every chapter that lights the G-buffer (03-08) shows on V:
  * `overdraw`, how many lighting fragments ran at each pixel as a heat map, and `volumes`, every
  * light's volume as lines over the lit picture. Read docs/07_face_culling.md, "Debug views".
  *
@@ -12,8 +12,8 @@
  *   debug_views_end_overdraw(dv, target)
  *        the counts as a heat map (shaders/heat.glsl, through accum_present.frag) into `target`
  *   debug_views_draw_volumes(dv, g, gs, target, volumes)
- *        copy g's depth into `target`'s (both GL_DEPTH_COMPONENT32F: the deferred chapters never
- *        write the target's depth), then every light's volume mesh, placed and scaled as the volume
+ *        copy g's depth (or, with a stencil, its depth's copy) into `target`'s (both
+ *        GL_DEPTH_COMPONENT32F: the deferred chapters never write the target's depth), then every light's volume mesh, placed and scaled as the volume
  *        chapters draw it (`volumes`; NULL: each light's solved radius, the scaled mesh), as lines in
  *        the light's colour, hidden where the scene is in front; leaves gl_pass_state_reset()'s state
  *        and GL_FILL

@@ -62,7 +62,7 @@ bool deferred_volumes_resize(deferred_volumes *dv, const gbuffer *g)
     return follow_gbuffer(dv, g, dv->accum_format);
 }
 
-static void present(const deferred_volumes *dv, GLuint target, const deferred_volumes_frame *f)
+void deferred_volumes_present(const deferred_volumes *dv, GLuint target, const deferred_volumes_frame *f)
 {
     frame_timer_mark("present");
     glBindFramebuffer(GL_FRAMEBUFFER, target);
@@ -102,7 +102,7 @@ bool deferred_volumes_render(deferred_volumes *dv, const gbuffer *g, const gpu_s
     dv->shaded_pixels = gl_samples_end(dv->query, f->count_pixels);
 
     /* 3. present: tone map + display encoding of the sum (overdraw view: the count as a heat map) */
-    present(dv, target, f);
+    deferred_volumes_present(dv, target, f);
     return gl_check("deferred_volumes_render");
 }
 

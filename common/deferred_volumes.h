@@ -17,6 +17,9 @@
  *        an rgba8 buffer clamps at 1, i.e. at SHADER_OVERDRAW_SCALE counts)
  *   deferred_volumes_shaded_pixels(dv)            lighting fragments kept in the last frame
  *                                                 (GL_SAMPLES_PASSED) when counted, else -1
+ *   deferred_volumes_present(dv, target, frame)   the present pass alone (frame->tonemap, exposure,
+ *                                                 view), for a chapter that fills the accumulation
+ *                                                 buffer itself (chapter 08: per batch of lights)
  */
 #ifndef COMMON_DEFERRED_VOLUMES_H
 #define COMMON_DEFERRED_VOLUMES_H
@@ -55,5 +58,6 @@ bool deferred_volumes_resize(deferred_volumes *dv, const gbuffer *g);
 bool deferred_volumes_render(deferred_volumes *dv, const gbuffer *g, const gpu_scene *gs, GLuint target,
                              const deferred_volumes_frame *frame);
 long deferred_volumes_shaded_pixels(const deferred_volumes *dv);
+void deferred_volumes_present(const deferred_volumes *dv, GLuint target, const deferred_volumes_frame *frame);
 
 #endif

@@ -9,18 +9,26 @@
 
 static bool make_targets(gbuffer *g, int width, int height)
 {
+    const GLenum depth_format = g->desc.stencil ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
     const fbo_desc desc = {
         .color_formats = {GL_SRGB8_ALPHA8, GL_RGBA16F},
         .color_count = 2,
-        .depth_format = GL_DEPTH_COMPONENT32F,
+        .depth_format = depth_format,
         .name = "gbuffer",
     };
-    return fbo_create(&g->fbo, &desc, width, height);
+    /* The copy has the same format: a depth blit needs it. */
+    const fbo_desc copy = {.depth_format = depth_format, .name = "gbuffer depth copy"};
+    return fbo_create(&g->fbo, &desc, width, height) &&
+           (!g->desc.stencil || fbo_create(&g->depth_copy, &copy, width, height));
 }
 
-bool gbuffer_create(gbuffer *g, int width, int height)
+bool gbuffer_create(gbuffer *g, int width, int height) { return gbuffer_create_with(g, width, height, NULL); }
+
+bool gbuffer_create_with(gbuffer *g, int width, int height, const gbuffer_desc *desc)
 {
     memset(g, 0, sizeof *g);
+    if (desc)
+        g->desc = *desc;
     /* forward.vert: the same vertex path as the forward renderer, so both rasterise identically. */
     g->program = gl_program_load("forward.vert", "gbuffer.frag", NULL);
     if (!g->program || !make_targets(g, width, height)) {
@@ -33,12 +41,25 @@ bool gbuffer_create(gbuffer *g, int width, int height)
 bool gbuffer_resize(gbuffer *g, int width, int height)
 {
     fbo_destroy(&g->fbo);
+    fbo_destroy(&g->depth_copy);
     return make_targets(g, width, height);
+}
+
+void gbuffer_attach_stencil(const gbuffer *g, GLuint framebuffer)
+{
+    if (!g->desc.stencil) {
+        log_error("gbuffer_attach_stencil: this G-buffer has no stencil (gbuffer_desc.stencil)");
+        return;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D, g->fbo.depth, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void gbuffer_destroy(gbuffer *g)
 {
     fbo_destroy(&g->fbo);
+    fbo_destroy(&g->depth_copy);
     gl_program_destroy(&g->program);
     memset(g, 0, sizeof *g);
 }
@@ -59,7 +80,7 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
     gl_pass_state_apply(&(gl_pass_state){.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true});
     glClearColor(0, 0, 0, 0);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | (g->desc.stencil ? GL_STENCIL_BUFFER_BIT : 0));
     /* Without this an SRGB8 attachment stores the linear value unconverted (and reads decode it). */
     glEnable(GL_FRAMEBUFFER_SRGB);
 
@@ -69,6 +90,12 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
 
     glDisable(GL_FRAMEBUFFER_SRGB);
     gl_pass_state_reset();
+    if (g->desc.stencil) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, g->fbo.id);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, g->depth_copy.id);
+        glBlitFramebuffer(0, 0, g->fbo.width, g->fbo.height, 0, 0, g->fbo.width, g->fbo.height,
+                          GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return true;
 }
@@ -76,7 +103,8 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
 void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program, int first_unit)
 {
     static const char *const names[3] = {"u_gbuffer_albedo", "u_gbuffer_normal", "u_gbuffer_depth"};
-    const GLuint textures[3] = {g->fbo.color[0], g->fbo.color[1], g->fbo.depth};
+    const GLuint textures[3] = {g->fbo.color[0], g->fbo.color[1],
+                                g->desc.stencil ? g->depth_copy.depth : g->fbo.depth};
     glUseProgram(program);
     for (int i = 0; i < 3; i++) {
         glActiveTexture(GL_TEXTURE0 + (GLenum)(first_unit + i));

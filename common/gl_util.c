@@ -358,6 +358,16 @@ void gl_draw_fullscreen(void)
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+/* glStencilOpSeparate for one face; a triple left out of the literal ({0, 0, 0}) keeps the value
+ * (GL_KEEP is not 0, and GL_ZERO is: one zero among set values is GL_ZERO). */
+static void stencil_ops(GLenum face, const GLenum op[3])
+{
+    if (!op[0] && !op[1] && !op[2])
+        glStencilOpSeparate(face, GL_KEEP, GL_KEEP, GL_KEEP);
+    else
+        glStencilOpSeparate(face, op[0], op[1], op[2]);
+}
+
 void gl_pass_state_apply(const gl_pass_state *s)
 {
     if (s->blend[0] || s->blend[1]) {
@@ -384,6 +394,16 @@ void gl_pass_state_apply(const gl_pass_state *s)
         glEnable(GL_DEPTH_CLAMP);
     else
         glDisable(GL_DEPTH_CLAMP);
+    if (s->stencil_func) {
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(s->stencil_func, 0, 0xFF);
+        stencil_ops(GL_FRONT, s->stencil_front);
+        stencil_ops(GL_BACK, s->stencil_back);
+    } else {
+        glDisable(GL_STENCIL_TEST);
+    }
+    GLboolean color = s->stencil_only ? GL_FALSE : GL_TRUE;
+    glColorMask(color, color, color, color);
 }
 
 void gl_pass_state_reset(void)

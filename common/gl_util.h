@@ -18,10 +18,11 @@
  *   gl_shader_dir()                       where shaders are read from: data_dir()/shaders, or
  *                                         $COURSE_SHADER_DIR
  *   gl_draw_fullscreen()                  one triangle covering the viewport (gl_VertexID based)
- *   gl_pass_state_apply(state)            blend, cull, depth test, depth write and depth clamp from
- *                                         one literal (zero fields: off)
+ *   gl_pass_state_apply(state)            blend, cull, depth test, depth write, depth clamp and the
+ *                                         stencil test from one literal (zero fields: off)
  *   gl_pass_state_reset()                 the state every pass starts from and leaves behind: all of
- *                                         the above off, depth writes on, glDepthFunc(GL_LESS)
+ *                                         the above off, depth writes on, glDepthFunc(GL_LESS),
+ *                                         colour writes on
  *   gl_texture_buffer_upload(buffer, texture, format, data, bytes)
  *                                         fill `buffer` and attach it to the buffer texture
  *                                         `texture` as `format` (GL_R32I, GL_RGBA32F); unbinds both
@@ -69,6 +70,11 @@ typedef struct gl_pass_state {
     GLenum depth_func; /* the depth test (GL_LEQUAL, GL_GREATER, ...); 0: no depth test */
     bool depth_write;  /* glDepthMask */
     bool depth_clamp;  /* GL_DEPTH_CLAMP: depth clamped to [0, 1] instead of clipping at near and far */
+    /* The stencil test (chapter 08), against reference 0 with every bit read and written: */
+    GLenum stencil_func;     /* glStencilFunc (GL_ALWAYS, GL_NOTEQUAL, ...); 0: no stencil test */
+    GLenum stencil_front[3]; /* glStencilOpSeparate(GL_FRONT, sfail, dpfail, dppass); {0, 0, 0}: keep */
+    GLenum stencil_back[3];  /* the same for back faces (GL_ZERO is 0: spell out all three) */
+    bool stencil_only;       /* glColorMask all off: the pass writes the stencil (and depth) only */
 } gl_pass_state;
 
 void gl_pass_state_apply(const gl_pass_state *state);

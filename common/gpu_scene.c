@@ -129,6 +129,23 @@ static void update_objects(gpu_scene *gs, float time)
     gl_texture_buffer_upload(gs->object_buffer, gs->object_texture, GL_RGBA32F, gs->object_texels, bytes);
 }
 
+/* A spot's unit axis and the cosines of its half-angles, in double; a point light: no cone. */
+static void light_cone(const scene_light *src, gpu_light *l)
+{
+    if (!src->spot) {
+        glm_vec3_zero(l->direction);
+        l->cos_outer = l->cos_inner = -1.0f;
+        return;
+    }
+    double d[3] = {src->direction[0], src->direction[1], src->direction[2]};
+    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (int k = 0; k < 3; k++)
+        l->direction[k] = (float)(d[k] / len);
+    const double to_rad = acos(-1.0) / 180.0;
+    l->cos_outer = (float)cos(src->outer_deg * to_rad);
+    l->cos_inner = (float)cos(src->inner_deg * to_rad);
+}
+
 static bool update_lights(gpu_scene *gs, float time, double cutoff)
 {
     const scene *s = gs->src;
@@ -162,9 +179,13 @@ static bool update_lights(gpu_scene *gs, float time, double cutoff)
         glm_vec3_scale((float *)src->color, src->intensity, l->radiance);
         l->attenuation[0] = src->kc, l->attenuation[1] = src->kl, l->attenuation[2] = src->kq;
         l->source = i;
+        light_cone(src, l);
+        /* one line per texel (common/shader_layout.h) */
         const float texels[SHADER_LIGHT_TEXELS * 4] = {
-            l->position[0], l->position[1], l->position[2], l->radius, l->radiance[0], l->radiance[1],
-            l->radiance[2], 0.0f, src->kc, src->kl, src->kq, 0.0f};
+            l->position[0],  l->position[1],  l->position[2],  l->radius,
+            l->radiance[0],  l->radiance[1],  l->radiance[2],  l->cos_outer,
+            src->kc,         src->kl,         src->kq,         l->cos_inner,
+            l->direction[0], l->direction[1], l->direction[2], 0.0f};
         memcpy(t, texels, sizeof texels);
     }
     /* A texture buffer may not be empty: keep one texel so the binding stays valid with 0 lights. */
@@ -213,3 +234,5 @@ void gpu_scene_draw(const gpu_scene *gs, GLuint program)
         mesh_draw_instanced(&gs->meshes[batch->mesh], batch->count);
     }
 }
+
+bool gpu_light_is_spot(const gpu_light *l) { return l->cos_outer > -1.0f; }

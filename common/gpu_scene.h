@@ -13,9 +13,11 @@
  *                                    u_objects (texture buffer on `unit`) and u_view_proj
  *   gpu_scene_draw(gs, program)      every object: one instanced draw per batch of consecutive
  *                                    objects that share a mesh (the city's 2,490 cubes are one draw)
+ *   gpu_light_is_spot(l)             whether the light has a cone (cos_outer > -1)
  *
  * Light and object texels: the layout in shader_layout.h (SHADER_LIGHT_TEXELS per light,
- * SHADER_OBJECT_TEXELS per object). An infinite radius is stored as FLT_MAX. forward.vert reads them
+ * SHADER_OBJECT_TEXELS per object). A spot is a point light plus a cone (gpu_light_is_spot); a
+ * point light has cos_outer = -1, so shade_light() has one code path for both. An infinite radius is stored as FLT_MAX. forward.vert reads them
  * for object u_first_object + gl_InstanceID, so a draw call costs the same for one cube or 2,490.
  */
 #ifndef COMMON_GPU_SCENE_H
@@ -41,6 +43,8 @@ typedef struct gpu_light {
     vec3 radiance;  /* intensity * colour */
     vec3 attenuation;
     int source;     /* index of the light in the scene */
+    vec3 direction; /* a spot's unit axis; 0 for a point light */
+    float cos_outer, cos_inner; /* a spot's cone; -1 and -1 for a point light (no cone) */
 } gpu_light;
 
 /* Consecutive objects with the same mesh, drawn with one glDrawElementsInstanced. */
@@ -76,5 +80,6 @@ bool gpu_scene_update(gpu_scene *gs, float time, double cutoff, int width, int h
 void gpu_scene_bind_lights(const gpu_scene *gs, GLuint program, int unit);
 void gpu_scene_bind_objects(const gpu_scene *gs, GLuint program, int unit);
 void gpu_scene_draw(const gpu_scene *gs, GLuint program);
+bool gpu_light_is_spot(const gpu_light *l);
 
 #endif

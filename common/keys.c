@@ -39,6 +39,9 @@ static const key_binding table[] = {
     {KEY_PAGE_UP, "PgUp", "06", KEY_ACTION_CHAPTER, "double the exposure"},
     {'X', "X", "07", KEY_ACTION_CHAPTER, "cull front faces (right), back faces, or none (both wrong)"},
     {'Z', "Z", "07", KEY_ACTION_CHAPTER, "depth clamp on / off"},
+    {'B', "B", "08", KEY_ACTION_CHAPTER, "batches of lights whose rectangles do not overlap, or one light per pass"},
+    {'X', "X", "08", KEY_ACTION_CHAPTER, "count where the depth test fails (right) or passes (wrong inside a volume)"},
+    {'Z', "Z", "08", KEY_ACTION_CHAPTER, "depth clamp on / off"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])

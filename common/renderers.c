@@ -1,6 +1,9 @@
 /* renderers.c - see renderers.h. */
 #include "renderers.h"
 
+#include "frame_timer.h"
+
+#include <stdlib.h>
 #include <string.h>
 
 const renderer_info renderer_table[RENDERER_COUNT] = {
@@ -12,6 +15,8 @@ const renderer_info renderer_table[RENDERER_COUNT] = {
     [RENDERER_DEFERRED_VOLUMES] = {"deferred-volumes", "07", "depth-tested back faces of one sphere per light"},
     [RENDERER_DEFERRED_VOLUMES_WINDOWED] = {"deferred-volumes-windowed", "07",
                                             "deferred-volumes with the windowed falloff: no cut-off step"},
+    [RENDERER_DEFERRED_STENCIL] = {"deferred-stencil", "08",
+                                   "per batch of lights, a stencil pass, then light where it is set"},
 };
 
 /* chapters/07_face_culling.c's volume state: added up, back faces behind the surface. */
@@ -20,6 +25,24 @@ const gl_pass_state renderer_volume_pass = {
     .cull = GL_FRONT,
     .depth_func = GL_GREATER,
     .depth_clamp = true,
+};
+
+/* chapters/08_stencil_volumes.c's two passes: count where the faces lie behind the surface, then
+ * light where the count is not 0 and reset it. */
+const gl_pass_state renderer_stencil_pass = {
+    .depth_func = GL_LEQUAL,
+    .depth_clamp = true,
+    .stencil_func = GL_ALWAYS,
+    .stencil_front = {GL_KEEP, GL_DECR_WRAP, GL_KEEP},
+    .stencil_back = {GL_KEEP, GL_INCR_WRAP, GL_KEEP},
+    .stencil_only = true,
+};
+const gl_pass_state renderer_stencil_light_pass = {
+    .blend = {GL_ONE, GL_ONE},
+    .cull = GL_FRONT,
+    .depth_clamp = true,
+    .stencil_func = GL_NOTEQUAL,
+    .stencil_back = {GL_KEEP, GL_KEEP, GL_ZERO},
 };
 
 int renderer_find(const char *name)
@@ -32,8 +55,21 @@ int renderer_find(const char *name)
 
 void renderers_create(renderer_set *r) { memset(r, 0, sizeof *r); }
 
+static void stencil_destroy(renderer_stencil *st)
+{
+    for (int i = 0; i < st->query_count; i++)
+        gl_query_destroy(&st->queries[i]);
+    free(st->queries);
+    light_batches_destroy(&st->lb);
+    gl_program_destroy(&st->program);
+    deferred_volumes_destroy(&st->dv);
+    gbuffer_destroy(&st->g);
+}
+
 void renderers_destroy(renderer_set *r)
 {
+    if (r->have_stencil)
+        stencil_destroy(&r->stencil);
     if (r->have_volumes)
         deferred_volumes_destroy(&r->volumes);
     if (r->have_fullscreen)
@@ -54,8 +90,36 @@ static bool ensure_gbuffer(renderer_set *r, const gpu_scene *gs)
     return (r->g.fbo.width == w && r->g.fbo.height == h) || gbuffer_resize(&r->g, w, h);
 }
 
+/* The stencil renderer at the view's size; its accumulation buffer also borrows g's stencil. */
+static bool ensure_stencil(renderer_set *r, const gpu_scene *gs)
+{
+    renderer_stencil *st = &r->stencil;
+    int w = gs->view.width, h = gs->view.height;
+    if (r->have_stencil && st->g.fbo.width == w && st->g.fbo.height == h)
+        return true;
+    bool ok;
+    if (!r->have_stencil) {
+        memset(st, 0, sizeof *st);
+        st->program = gl_program_load("light_volume.vert", "depth_only.frag", NULL);
+        st->u_first = glGetUniformLocation(st->program, "u_first_instance");
+        st->u_fullscreen = glGetUniformLocation(st->program, "u_fullscreen");
+        ok = st->program && gbuffer_create_with(&st->g, w, h, &(gbuffer_desc){.stencil = true}) &&
+             deferred_volumes_create(&st->dv, &st->g, GL_RGBA16F);
+    } else {
+        ok = gbuffer_resize(&st->g, w, h) && deferred_volumes_resize(&st->dv, &st->g);
+    }
+    if (ok)
+        gbuffer_attach_stencil(&st->g, st->dv.accum.id);
+    r->have_stencil = ok && gl_check("renderers: stencil");
+    if (!r->have_stencil)
+        stencil_destroy(st);
+    return r->have_stencil;
+}
+
 static bool ensure(renderer_set *r, renderer_id id, const gpu_scene *gs)
 {
+    if (id == RENDERER_DEFERRED_STENCIL)
+        return ensure_stencil(r, gs);
     if (renderer_table[id].forward)
         return r->have_forward || (r->have_forward = forward_create(&r->fwd));
     if (!ensure_gbuffer(r, gs))
@@ -79,6 +143,85 @@ static bool draw_forward(renderer_set *r, renderer_id id, const gpu_scene *gs, G
     return ok;
 }
 
+/* Instances [first, first + count) of the light list with the program in use. */
+static void draw_lights(const renderer_stencil *st, GLint u_first, GLint u_fullscreen, int first, int count,
+                        bool fullscreen)
+{
+    glUniform1i(u_first, first);
+    glUniform1i(u_fullscreen, fullscreen);
+    if (fullscreen) {
+        glBindVertexArray(st->dv.lv.sphere.vao);
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 3, count);
+    } else {
+        mesh_draw_instanced(&st->dv.lv.sphere, count);
+    }
+}
+
+static void light_draw(renderer_stencil *st, int *query, const gl_pass_state *pass, int first, int count,
+                       bool fullscreen)
+{
+    glUseProgram(st->dv.lv.program);
+    gl_pass_state_apply(pass);
+    if (query)
+        glBeginQuery(GL_SAMPLES_PASSED, st->queries[(*query)++]);
+    draw_lights(st, st->dv.lv.u_first_instance, st->dv.lv.u_fullscreen, first, count, fullscreen);
+    if (query)
+        glEndQuery(GL_SAMPLES_PASSED);
+}
+
+static bool make_queries(renderer_stencil *st, int n)
+{
+    GLuint *q = n > st->query_count ? realloc(st->queries, (size_t)n * sizeof *q) : st->queries;
+    if (!q)
+        return false;
+    for (st->queries = q; st->query_count < n; st->query_count++)
+        q[st->query_count] = gl_query_create();
+    return true;
+}
+
+/* Chapter 08's frame (chapters/08_stencil_volumes.c, draw_volumes): ambient, then per batch the
+ * stencil pass and the lighting pass, the full-screen lights, present. */
+static bool draw_stencil(renderer_stencil *st, const gpu_scene *gs, GLuint target, bool count, long *shaded)
+{
+    light_volumes *lv = &st->dv.lv;
+    if (!gbuffer_render(&st->g, gs) || !light_volumes_sort(lv, gs) ||
+        !light_batches_make(&st->lb, lv, gs, false) || (count && !make_queries(st, st->lb.count + 1)))
+        return false;
+    frame_timer_mark("lighting");
+    glBindFramebuffer(GL_FRAMEBUFFER, st->dv.accum.id);
+    glViewport(0, 0, st->dv.accum.width, st->dv.accum.height);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    light_volumes_draw_ambient(lv, &st->g, gs);
+    light_volumes_bind(lv, &st->g, gs, LIGHT_VOLUMES_VIEW_LIT);
+    glUseProgram(st->program);
+    gpu_scene_bind_lights(gs, st->program, SHADER_UNIT_LIGHTS);
+    glUniform1i(glGetUniformLocation(st->program, "u_light_index"), SHADER_UNIT_LIGHT_INDEX);
+    glUniformMatrix4fv(glGetUniformLocation(st->program, "u_view_proj"), 1, GL_FALSE,
+                       (const float *)gs->view.view_proj);
+    glUniform1f(glGetUniformLocation(st->program, "u_mesh_scale"), lv->mesh_scale);
+    int used = 0, *query = count ? &used : NULL;
+    for (int b = 0; b < st->lb.count; b++) {
+        const light_batch *batch = &st->lb.batches[b];
+        glUseProgram(st->program);
+        gl_pass_state_apply(&renderer_stencil_pass);
+        draw_lights(st, st->u_first, st->u_fullscreen, batch->first, batch->count, false);
+        light_draw(st, query, &renderer_stencil_light_pass, batch->first, batch->count, false);
+    }
+    if (gs->light_count > lv->finite_count)
+        light_draw(st, query, &(gl_pass_state){.blend = {GL_ONE, GL_ONE}}, lv->finite_count,
+                   gs->light_count - lv->finite_count, true);
+    gl_pass_state_reset();
+    *shaded = count ? 0 : -1;
+    for (int i = 0; i < used; i++) {
+        GLuint samples = 0;
+        glGetQueryObjectuiv(st->queries[i], GL_QUERY_RESULT, &samples);
+        *shaded += (long)samples;
+    }
+    deferred_volumes_present(&st->dv, target, &(deferred_volumes_frame){0});
+    return gl_check("renderers: deferred-stencil");
+}
+
 bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint target,
                     renderer_draw_options o, renderer_result *result)
 {
@@ -86,6 +229,9 @@ bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint
     bool ok = ensure(r, id, gs);
     if (ok && renderer_table[id].forward) {
         ok = draw_forward(r, id, gs, target, o, &res);
+    } else if (ok && id == RENDERER_DEFERRED_STENCIL) {
+        ok = draw_stencil(&r->stencil, gs, target, o.count_pixels, &res.shaded);
+        r->accum = &r->stencil.dv.accum;
     } else if (ok && id == RENDERER_DEFERRED_FULLSCREEN) {
         const deferred_fullscreen_options fo = {.count_pixels = o.count_pixels};
         ok = gbuffer_render(&r->g, gs) && deferred_fullscreen_render(&r->fullscreen, &r->g, gs, target, fo);
@@ -100,6 +246,7 @@ bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint
         if (id == RENDERER_DEFERRED_VOLUMES_WINDOWED)
             shaded.falloff = SHADER_FALLOFF_WINDOWED;
         ok = gbuffer_render(&r->g, &shaded) && deferred_volumes_render(&r->volumes, &r->g, &shaded, target, &f);
+        r->accum = &r->volumes.accum;
         res.shaded = deferred_volumes_shaded_pixels(&r->volumes);
         res.lights_per_pixel = 1.0; /* one fragment per (pixel, light) */
     }
@@ -108,4 +255,4 @@ bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint
     return ok;
 }
 
-const fbo *renderers_accum(const renderer_set *r) { return &r->volumes.accum; }
+const fbo *renderers_accum(const renderer_set *r) { return r->accum ? r->accum : &r->volumes.accum; }

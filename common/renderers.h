@@ -10,10 +10,13 @@
  *                                            `target` (display-encoded RGBA8, or linear radiance
  *                                            for a forward renderer with options.linear_output);
  *                                            result (may be NULL): the lighting pass's work
- *   renderers_accum(r)                       deferred-volumes' linear sum of the last frame
+ *   renderers_accum(r)                       the linear sum of the last light-volume frame
+ *                                            (deferred-volumes, -windowed or deferred-stencil)
  *
- * The deferred renderers are the final stages of chapters 03 and 07; renderer_volume_pass is
- * chapter 07's pass state, so the benchmark measures exactly what that chapter draws.
+ * The deferred renderers are the final stages of chapters 03, 07 and 08; renderer_volume_pass is
+ * chapter 07's pass state, renderer_stencil_pass and renderer_stencil_light_pass chapter 08's, and
+ * deferred-stencil draws chapter 08's frame (its batches, the two passes per batch) with them, so
+ * the benchmark measures exactly what those chapters draw (agree.08_bench_renderer checks 08's).
  */
 #ifndef COMMON_RENDERERS_H
 #define COMMON_RENDERERS_H
@@ -21,6 +24,7 @@
 #include "deferred_fullscreen.h"
 #include "deferred_volumes.h"
 #include "forward.h"
+#include "light_batches.h"
 
 typedef enum renderer_id {
     RENDERER_FORWARD,         /* chapter 00's default: depth pre-pass + per-object light lists */
@@ -30,6 +34,7 @@ typedef enum renderer_id {
     RENDERER_DEFERRED_FULLSCREEN, /* chapter 03: one full-screen pass, every light per pixel */
     RENDERER_DEFERRED_VOLUMES,    /* chapter 07: one depth-tested volume per light, added up */
     RENDERER_DEFERRED_VOLUMES_WINDOWED, /* the same with the windowed falloff (chapter 05's page) */
+    RENDERER_DEFERRED_STENCIL,          /* chapter 08: stencil pass + lighting pass per batch of lights */
     RENDERER_COUNT
 } renderer_id;
 
@@ -51,16 +56,30 @@ typedef struct renderer_result {
     double lights_per_pixel; /* lights each shaded fragment loops over (lists: the mean length) */
 } renderer_result;
 
+/* Chapter 08's frame: a G-buffer with a stencil, its own volumes and accumulation buffer. */
+typedef struct renderer_stencil {
+    gbuffer g;
+    deferred_volumes dv;
+    light_batches lb;
+    GLuint program; /* the stencil pass: light_volume.vert + depth_only.frag */
+    GLint u_first, u_fullscreen;
+    GLuint *queries; /* GL_SAMPLES_PASSED per lighting draw */
+    int query_count;
+} renderer_stencil;
+
 typedef struct renderers {
     forward fwd;
     gbuffer g;
     deferred_fullscreen fullscreen;
     deferred_volumes volumes;
-    bool have_forward, have_gbuffer, have_fullscreen, have_volumes;
+    renderer_stencil stencil;
+    const fbo *accum; /* the last light-volume frame's sum */
+    bool have_forward, have_gbuffer, have_fullscreen, have_volumes, have_stencil;
 } renderer_set;
 
 extern const renderer_info renderer_table[RENDERER_COUNT];
 extern const gl_pass_state renderer_volume_pass;
+extern const gl_pass_state renderer_stencil_pass, renderer_stencil_light_pass;
 
 int renderer_find(const char *name);
 void renderers_create(renderer_set *r);

@@ -5,7 +5,7 @@
  *                                      parse text already in memory (tests, fuzzing)
  *   scene_destroy(scene)               free what a successful parse allocated
  *   scene_object_world_at(scene, i, t, out)   world matrix T*Ry*S of object i at time t
- *   scene_light_position_at(scene, i, t, out) position of light i at time t
+ *   scene_light_position_at(scene, i, t, out) position of light i at time t (a spot's too)
  *   scene_add_light(scene, light)      append a light (used by the --lights generator)
  *
  * Everything is linear RGB, right-handed, +Y up; angles in the file are
@@ -67,6 +67,8 @@ typedef struct scene_object {
     int key_count;
 } scene_object;
 
+/* A point light, or (directive `spot`) a spot light: the same light inside a cone. Zero spot fields
+ * are a point light, so code that builds lights without them makes point lights. */
 typedef struct scene_light {
     vec3 position;
     vec3 color;      /* default 1 1 1 */
@@ -74,6 +76,9 @@ typedef struct scene_light {
     float kc, kl, kq; /* default 1 0.14 0.07 */
     scene_key *keys;
     int key_count;
+    bool spot;                  /* false: a point light (the fields below are 0) */
+    vec3 direction;             /* spot: the cone's axis, as given (not zero; not normalised) */
+    float inner_deg, outer_deg; /* spot: half-angles from the axis, 0 < inner <= outer < 90 */
 } scene_light;
 
 typedef struct scene {

@@ -4,7 +4,9 @@
  * injects `#define SHADER_NAME VALUE` into every shader after its #version line, so a shader reads
  * SHADER_LIGHT_TEXELS exactly as the C code that fills the texture does.
  *
- *   light texels (RGBA32F):  position.xyz + radius, radiance + 0, attenuation kc kl kq + 0
+ *   light texels (RGBA32F):  position.xyz + radius, radiance + cos(outer), attenuation kc kl kq +
+ *                            cos(inner), spot direction xyz (unit) + 0; a point light is a spot
+ *                            without a cone: direction 0, both cosines -1 (shaders/shading.glsl)
  *   object texels (RGBA32F): world matrix columns 0-3, normal matrix columns 4-6,
  *                            albedo + specular 7, shininess 8
  *   views and tone maps:     the values of the u_view and u_tonemap uniforms; the overdraw view's
@@ -15,7 +17,8 @@
 #define COMMON_SHADER_LAYOUT_H
 
 #define SHADER_LAYOUT(X)                                                                                   \
-    X(LIGHT_TEXELS, 3)                                                                                     \
+    X(LIGHT_TEXELS, 4)                                                                                     \
+    X(LIGHT_TEXEL_SPOT, 3) /* the spot's direction; its cosines are the w of texels 1 and 2 */             \
     X(OBJECT_TEXELS, 9)                                                                                    \
     X(OBJECT_TEXEL_NORMAL, 4)                                                                              \
     X(OBJECT_TEXEL_MATERIAL, 7)                                                                            \

@@ -31,7 +31,7 @@ void main()
     vec3 c = shade_ambient(s.albedo);
     int evaluated = 0;
     for (int i = 0; i < u_light_count; i++, evaluated++)
-        c += shade_light(light_fetch(i), s.position, n, v, s.albedo, s.specular, s.shininess);
+        c += shade_light(light_fetch(i), light_fetch_cone(i), s.position, n, v, s.albedo, s.specular, s.shininess);
 #ifdef VIEW_OVERDRAW
     o_color = vec4(heat(evaluated), 1.0);
     return;

@@ -30,7 +30,7 @@ void main()
     }
     for (int k = 0; k < count; k++) {
         int i = u_use_list ? texelFetch(u_light_list, first + k).r : k;
-        c += shade_light(light_fetch(i), v_world, n, v, v_albedo, v_specular, v_shininess);
+        c += shade_light(light_fetch(i), light_fetch_cone(i), v_world, n, v, v_albedo, v_specular, v_shininess);
     }
 #ifdef OUTPUT_LINEAR
     o_color = vec4(c, 1.0); // linear radiance for a float target (the benchmark's HDR error)

@@ -12,6 +12,8 @@ flat in vec3 v_light_position;
 flat in float v_light_radius;
 flat in vec3 v_light_radiance;
 flat in vec3 v_light_attenuation;
+flat in vec3 v_light_direction;
+flat in vec2 v_light_cos;
 flat in float v_volume_radius;
 
 uniform int u_view; // SHADER_VIEW_LIT, _RING (lit + cut-off ring) or _OVERDRAW (one count per fragment)
@@ -47,7 +49,8 @@ void main()
     light_data L = light_data(v_light_position, v_light_radius, v_light_radiance, v_light_attenuation);
     vec3 n = s.normal;
     vec3 v = safe_normalize(u_eye - s.position, n);
-    vec3 c = shade_light(L, s.position, n, v, s.albedo, s.specular, s.shininess);
+    light_cone C = light_cone(v_light_direction, v_light_cos.x, v_light_cos.y);
+    vec3 c = shade_light(L, C, s.position, n, v, s.albedo, s.specular, s.shininess);
 #ifdef OVERWRITE
     c += shade_ambient(s.albedo);
 #endif

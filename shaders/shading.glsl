@@ -1,5 +1,6 @@
-// shading.glsl - the one shading model every renderer uses (docs/00_forward.md has the formulas).
-// Included by forward.frag and every deferred lighting shader, never copied.
+// shading.glsl - the one shading model every renderer uses (docs/00_forward.md has the formulas,
+// docs/09_spot_lights.md the spot's cone). Included by forward.frag and every deferred lighting
+// shader, never copied.
 
 uniform samplerBuffer u_lights; // SHADER_LIGHT_TEXELS RGBA32F texels per light (common/shader_layout.h)
 uniform int u_light_count;
@@ -22,6 +23,34 @@ light_data light_fetch(int i)
     return light_data(a.xyz, a.w, b.rgb, c.xyz);
 }
 
+// A spot's cone: its unit axis and the cosines of its half-angles. A point light is a spot without
+// one (direction 0, both cosines -1): spot_factor() is 1 for it everywhere.
+struct light_cone {
+    vec3 direction;
+    float cos_outer;
+    float cos_inner;
+};
+
+const light_cone NO_CONE = light_cone(vec3(0.0), -1.0, -1.0);
+
+light_cone light_fetch_cone(int i)
+{
+    int t = SHADER_LIGHT_TEXELS * i;
+    return light_cone(texelFetch(u_lights, t + SHADER_LIGHT_TEXEL_SPOT).xyz, texelFetch(u_lights, t + 1).w,
+                      texelFetch(u_lights, t + 2).w);
+}
+
+// smoothstep(cos(outer), cos(inner), dot(-l, D)), l the unit vector from the surface to the light:
+// 1 inside the inner cone, 0 outside the outer one. With inner = outer smoothstep is undefined
+// (its edges are equal): a hard edge instead.
+float spot_factor(light_cone C, vec3 l)
+{
+    float c = dot(-l, C.direction);
+    if (C.cos_inner <= C.cos_outer)
+        return c >= C.cos_outer ? 1.0 : 0.0;
+    return smoothstep(C.cos_outer, C.cos_inner, c);
+}
+
 // normalize() of a zero vector is NaN: degenerate input falls back instead.
 vec3 safe_normalize(vec3 v, vec3 fallback)
 {
@@ -29,8 +58,10 @@ vec3 safe_normalize(vec3 v, vec3 fallback)
     return len2 > 1e-30 ? v * inversesqrt(len2) : fallback;
 }
 
-// Light i's contribution at p (world space), unit normal n, unit view vector v.
-vec3 shade_light(light_data L, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess)
+// Light i's contribution at p (world space), unit normal n, unit view vector v; C is its cone
+// (light_fetch_cone(i)), NO_CONE for a point light.
+vec3 shade_light(light_data L, light_cone C, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular,
+                 float shininess)
 {
     vec3 to_light = L.position - p;
     float d = length(to_light);
@@ -42,6 +73,10 @@ vec3 shade_light(light_data L, vec3 p, vec3 n, vec3 v, vec3 albedo, float specul
     // Both terms vanish when n.l <= 0: no diffuse, and no specular leaking round the terminator.
     if (ndl <= 0.0)
         return vec3(0.0);
+    // Outside the cone: nothing (a point light is never outside).
+    float spot = spot_factor(C, l);
+    if (spot <= 0.0)
+        return vec3(0.0);
     vec3 h = safe_normalize(l + v, n);
     float f = 1.0 / (L.attenuation.x + (L.attenuation.y + L.attenuation.z * d) * d);
     // Windowed: (1 - (d/r)^4)^2 takes the light to zero, with zero slope, at its radius, so the
@@ -51,7 +86,14 @@ vec3 shade_light(light_data L, vec3 p, vec3 n, vec3 v, vec3 albedo, float specul
         float w = clamp(1.0 - (x * x) * (x * x), 0.0, 1.0);
         f *= w * w;
     }
+    f *= spot;
     return f * L.radiance * (ndl * albedo + specular * pow(max(dot(n, h), 0.0), shininess));
+}
+
+// A point light: the same function without a cone.
+vec3 shade_light(light_data L, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess)
+{
+    return shade_light(L, NO_CONE, p, n, v, albedo, specular, shininess);
 }
 
 vec3 shade_ambient(vec3 albedo)

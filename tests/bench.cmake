@@ -1,4 +1,4 @@
-# The forward-vs-deferred benchmark (tools/bench.c, docs/08_compare.md).
+# The forward-vs-deferred benchmark (tools/bench.c, docs/compare.md).
 # Its helpers live in tools/bench/ so the tools/*.c glob does not make them separate programs.
 target_sources(bench PRIVATE
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_measure.c

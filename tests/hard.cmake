@@ -52,3 +52,19 @@ if(TARGET 07_face_culling AND TARGET 00_forward)
            ${COURSE_TEST_OUT} $<TARGET_FILE:${HARD_07}> ${CMAKE_SOURCE_DIR}/assets/scenes/default.scene)
   set_tests_properties(hard.sizes PROPERTIES LABELS hard SKIP_RETURN_CODE 77)
 endif()
+
+# Chapter 08 (stencil light volumes): 3 (camera inside a volume) and 4 (the far and near planes) are
+# agree.08_vs_forward_inside_volume / _far_plane / _near_plane / _near_plane_alone in
+# tests/chapter_08.cmake, with the bug each choice prevents (agree.08_depth_pass_inside_vanishes,
+# _depth_pass_near_plane, _no_depth_clamp_far_plane); 1, 8 and 9 there too (_culled, _cutoff0,
+# _hdr1e6, _degenerate). 12. extreme sizes: a stencil and a depth copy at 16384x8 and 1x1.
+if(TARGET 08_stencil_volumes)
+  add_test(NAME hard.sizes_08 COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_hard_sizes.sh $<TARGET_FILE:imgdiff>
+           ${COURSE_TEST_OUT}/hard_sizes_08 $<TARGET_FILE:08_stencil_volumes>
+           ${CMAKE_SOURCE_DIR}/assets/scenes/default.scene)
+  set_tests_properties(hard.sizes_08 PROPERTIES LABELS hard SKIP_RETURN_CODE 77)
+endif()
+
+# 14. Spot lights (chapter 09's cone volumes): unit.test_cone_mesh and the camera inside a cone, apexes
+# behind the near plane, cones across the far plane, each against forward
+# (agree.09_vs_forward_spot_inside / _spot_near_plane / _spot_far_plane), are in tests/chapter_09.cmake.

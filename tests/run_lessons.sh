@@ -21,6 +21,16 @@ expect_first "GL_ONE, GL_ONE" 06_additive_blending.c
 expect_first "GL_RGBA16F" 06_additive_blending.c
 expect_first "GL_GREATER" 07_face_culling.c
 expect_first "GL_DEPTH_CLAMP" 07_face_culling.c
+expect_first "glStencilOpSeparate" 08_stencil_volumes.c
+expect_first "GL_INCR_WRAP" 08_stencil_volumes.c
+expect_first "GL_DECR_WRAP" 08_stencil_volumes.c
+expect_first "GL_NOTEQUAL" 08_stencil_volumes.c
+expect_first "stencil_only" 08_stencil_volumes.c
+expect_first "gbuffer_create_with" 08_stencil_volumes.c
+expect_first "light_batches_make" 08_stencil_volumes.c
+expect_first "CONE_VOLUME" 09_spot_lights.c
+expect_first "light_volumes_cone_create" 09_spot_lights.c
+expect_first "gpu_light_is_spot" 09_spot_lights.c
 expect_first "forward_draw_depth" 00_forward.c
 expect_first "glCheckFramebufferStatus" 01_fbo_setup.c
 # No lesson behind a flag in common/: the old option structs are gone.

@@ -6,7 +6,8 @@
 #               pose is the window's picture (1/255 on every pixel), and differs from the start
 #   2. light    G adds exactly one light (the overlay's count) and changes the picture
 #   3. overlay  off: the window shows exactly the headless picture; on: only a darkened box with
-#               text at the top-left corner changes (tools/window_check overlay)
+#               text at the top-left corner changes (tools/window_check overlay), and it sets the
+#               lighting fragments against the ideal pairs
 #   4. compare  in CHAPTER_07 and each DEFERRED_CHAPTER: M's split is forward | divider | chapter
 #               pixel for pixel, after , . and dragging the divider too; the difference view is
 #               black exactly where forward and the chapter agree within 1/255
@@ -135,6 +136,7 @@ cat >"$tmp/overlay.script" <<SCRIPT
 1 screenshot $out.overlay-off.png
 2 key H
 2 screenshot $out.overlay-on.png
+2 overlay
 3 key H
 3 screenshot $out.overlay-off-again.png
 3 quit
@@ -144,6 +146,14 @@ if run_script "$ch07" "$tmp/overlay.script"; then
   "$check" overlay "$out.overlay-off.png" "$out.overlay-on.png" | sed 's/^/     /'
   [ "${PIPESTATUS[0]}" -eq 0 ] && say "ok   overlay: on, text in its box and nothing else" || say "FAIL overlay: on"
   same "$out.start.png" "$out.overlay-off-again.png" "overlay: off again, no trace left"
+  # Paused with the overlay on, the lighting fragments are set against the ideal (pixel, light)
+  # pairs counted on the CPU: chapter 07 shades each at least once (measured 1.0005 on default).
+  ratio=$(sed -n 's/^overlay: lighting fragments [0-9]* = \([0-9.]*\) x the ideal .*/\1/p' "$tmp/stdout")
+  if [ -n "$ratio" ] && awk -v r="$ratio" 'BEGIN { exit !(r >= 1.0 && r < 1.1) }'; then
+    say "ok   overlay: lighting fragments $ratio x the ideal pairs"
+  else
+    say "FAIL overlay: the shaded/ideal line says '$ratio' (want 1.0 to 1.1 for chapter 07 on the default scene)"
+  fi
 fi
 
 # 4. compare, in every chapter given

@@ -1,7 +1,7 @@
 /* bench.c - forward against deferred, measured: time per frame, lighting work and error, swept over
  * light counts, scenes, renderers and the cut-off. Writes out/bench.csv, out/bench.md and two plots.
  *
- * Read docs/08_compare.md first: it shows a run's tables and explains them. The program is a loop
+ * Read docs/compare.md first: it shows a run's tables and explains them. The program is a loop
  * over "cases" (scene, lights, cut-off); in each case every renderer draws the same frame, frame by
  * frame in turn (round robin), so a noisy moment of the machine hits them all alike. After the
  * timed frames one untimed frame per renderer counts the lighting work (GL_SAMPLES_PASSED) and

@@ -496,6 +496,95 @@ static void test_errors(void **state)
         check_error(cases[i].text, cases[i].want);
 }
 
+/* ---- spot lights ---------------------------------------------------------------------------- */
+
+/* A spot is a light with a cone: every light attribute, plus direction and cone, in any order; keys
+ * animate its position as a light's. A plain light stays a point light (spot false, cone zero). */
+static void test_spot(void **state)
+{
+    (void)state;
+    const char *text = "light position 0 1 0\n"
+                       "spot direction 0 -2 0 cone 20 35 position 1 4 2 color 1 0.5 0.25 intensity 3 "
+                       "attenuation 1 0.09 0.032\n"
+                       "spot cone 30 30 direction 1e-30 0 0\n" /* tiny but not zero; inner = outer */
+                       "key 0 position 0 3 0\n"
+                       "key 2 position 2 3 0\n"
+                       "spot position -1 2 0 direction 1 -1 0 cone 0.5 89.9\n";
+    scene s;
+    parse_ok(text, &s);
+    assert_int_equal(s.light_count, 4);
+    assert_false(s.lights[0].spot);
+    assert_float_equal(s.lights[0].outer_deg, 0.0f, 0.0f);
+
+    const scene_light *a = &s.lights[1];
+    assert_true(a->spot);
+    assert_vec3_near(a->position, 1, 4, 2);
+    assert_vec3_near(a->direction, 0, -2, 0); /* as given: the renderers normalise it */
+    assert_float_equal(a->inner_deg, 20.0f, EPS);
+    assert_float_equal(a->outer_deg, 35.0f, EPS);
+    assert_vec3_near(a->color, 1, 0.5f, 0.25f);
+    assert_float_equal(a->intensity, 3.0f, EPS);
+    assert_float_equal(a->kl, 0.09f, EPS);
+    assert_float_equal(a->kq, 0.032f, EPS);
+    assert_int_equal(a->key_count, 0);
+
+    const scene_light *b = &s.lights[2]; /* a light's defaults */
+    assert_true(b->spot);
+    assert_float_equal(b->direction[0], 1e-30f, 1e-36f);
+    assert_float_equal(b->inner_deg, 30.0f, EPS);
+    assert_float_equal(b->outer_deg, 30.0f, EPS);
+    assert_vec3_near(b->color, 1, 1, 1);
+    assert_float_equal(b->kc, 1.0f, EPS);
+    assert_float_equal(b->kl, 0.14f, EPS);
+    assert_float_equal(b->kq, 0.07f, EPS);
+    assert_int_equal(b->key_count, 2);
+    vec3 p;
+    scene_light_position_at(&s, 2, 1.0f, p);
+    assert_vec3_near(p, 1, 3, 0);
+
+    assert_float_equal(s.lights[3].inner_deg, 0.5f, EPS);
+    assert_float_equal(s.lights[3].outer_deg, 89.9f, EPS);
+    scene_destroy(&s);
+}
+
+static void test_spot_errors(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *text;
+        const char *want;
+    } cases[] = {
+        {"spot cone 20 30\n", "t.scene:1: spot: missing 'direction X Y Z'"},
+        {"spot direction 0 -1 0\n", "t.scene:1: spot: missing 'cone INNER OUTER'"},
+        {"\nspot direction 0 0 0 cone 20 30\n", "t.scene:2: spot direction: must not be zero"},
+        {"spot direction 0 -1 cone 20 30\n", "t.scene:1: spot direction: expected a number, got 'cone'"},
+        {"spot direction 0 -1 nan cone 20 30\n", "t.scene:1: spot direction: not a finite number, got 'nan'"},
+        {"spot direction 0 -1 0 cone 0 30\n", "t.scene:1: spot cone: must be > 0, got '0'"},
+        {"spot direction 0 -1 0 cone -5 30\n", "t.scene:1: spot cone: must be > 0, got '-5'"},
+        {"spot direction 0 -1 0 cone 20\n", "t.scene:1: spot cone: missing number"},
+        {"spot direction 0 -1 0 cone 20 90\n",
+         "t.scene:1: spot cone: the outer angle must be below 90 degrees, got '90'"},
+        {"spot direction 0 -1 0 cone 95 120\n",
+         "t.scene:1: spot cone: the outer angle must be below 90 degrees, got '120'"},
+        {"spot direction 0 -1 0 cone 40 30\n",
+         "t.scene:1: spot cone: the inner angle (40) must not exceed the outer angle (30)"},
+        {"spot direction 0 -1 0 cone 20 30 40\n", "t.scene:1: spot: unexpected extra token '40'"},
+        {"spot direction 0 -1 0 cone 20 30 cone 10 20\n", "t.scene:1: spot: 'cone' given twice"},
+        {"spot direction 0 -1 0 cone 20 30 angle 5\n",
+         "t.scene:1: spot: unknown attribute 'angle' (expected position, direction, cone, color, "
+         "intensity or attenuation)"},
+        {"spot direction 0 -1 0 cone 20 30 attenuation 0 1 1\n", "t.scene:1: spot attenuation: KC must be > 0"},
+        {"spot direction 0 -1 0 cone 20 30 color 1 -1 1\n", "t.scene:1: spot color: must be >= 0, got '-1'"},
+        {"spot direction 0 -1 0 cone 20 30 intensity inf\n",
+         "t.scene:1: spot intensity: not a finite number, got 'inf'"},
+        {"light direction 0 -1 0\n", "t.scene:1: light: unknown attribute 'direction'"},
+        {"spot direction 0 -1 0 cone 20 30\nkey 1 position 0 0 0\nkey 1 position 1 1 1\n",
+         "t.scene:3: key time '1' must be greater"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
+        check_error(cases[i].text, cases[i].want);
+}
+
 static void test_error_long_line(void **state)
 {
     (void)state;
@@ -645,5 +734,6 @@ UNIT_TEST_MAIN(setup_dir, tmp_dir_remove, cmocka_unit_test(test_defaults),
                cmocka_unit_test(test_every_attribute), cmocka_unit_test(test_comments_and_layout),
                cmocka_unit_test(test_keys), cmocka_unit_test(test_world_matrix),
                cmocka_unit_test(test_add_light), cmocka_unit_test(test_errors),
+               cmocka_unit_test(test_spot), cmocka_unit_test(test_spot_errors),
                cmocka_unit_test(test_error_long_line), cmocka_unit_test(test_error_from_file),
                cmocka_unit_test(test_model_paths), cmocka_unit_test(test_large_scene))

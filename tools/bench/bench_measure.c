@@ -90,12 +90,12 @@ bool bench_measure_count_ideal(bench_measure *m, bench_renderers *br, const gpu_
         !read_depth(bench_renderers_target(br), m->depth))
         return false;
     const float *view_proj = (const float *)gs->view.view_proj;
-    bench_work_positions(m->depth, m->width, m->height, view_proj, m->positions);
+    light_work_positions(m->depth, m->width, m->height, view_proj, m->positions);
     out->covered = 0;
     for (size_t p = 0; p < (size_t)m->width * (size_t)m->height; p++)
         out->covered += m->positions[4 * p + 3] != 0.0;
     out->ideal =
-        bench_work_ideal_pairs(m->positions, m->width, m->height, view_proj, gs->lights, gs->light_count);
+        light_work_ideal_pairs(m->positions, m->width, m->height, view_proj, gs->lights, gs->light_count);
     return true;
 }
 

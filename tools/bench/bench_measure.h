@@ -33,7 +33,7 @@
 typedef struct bench_measure {
     int width, height;
     float *depth, *hdr; /* read-backs of the frame being measured */
-    double *positions;  /* bench_work_positions of depth */
+    double *positions;  /* light_work_positions of depth */
     /* the exact reference of the current (scene, lights): 8-bit and linear */
     image ref8;
     float *ref_hdr;

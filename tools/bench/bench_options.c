@@ -9,7 +9,7 @@
 #include <string.h>
 
 static const char *const default_renderers =
-    "forward-naive,forward,deferred-fullscreen,deferred-volumes,deferred-volumes-windowed";
+    "forward-naive,forward,deferred-fullscreen,deferred-volumes,deferred-volumes-windowed,deferred-stencil";
 
 void bench_options_print_help(FILE *f)
 {
@@ -25,9 +25,11 @@ void bench_options_print_help(FILE *f)
         "                        (default default,city,bunnies,sphere,teapots)\n"
         "  --renderers LIST      of: forward-naive forward forward-prepass forward-lists\n"
         "                        deferred-fullscreen deferred-volumes deferred-volumes-windowed\n"
+        "                        deferred-stencil\n"
         "                        (default: forward-naive, forward, deferred-fullscreen, deferred-volumes,\n"
         "                        deferred-volumes-windowed: chapter 07 with the windowed falloff, whose\n"
-        "                        error against the exact hard-falloff picture is the model's price)\n"
+        "                        error against the exact hard-falloff picture is the model's price,\n"
+        "                        deferred-stencil: chapter 08's stencil light volumes)\n"
         "  --cutoffs LIST        cut-off sweep in 1/256 units (default 0.5,1,2,5,10,20,32)\n"
         "  --cutoff-scene NAME   scene of the cut-off sweep (default: the first of --scenes)\n"
         "  --cutoff-lights N     light count of the cut-off sweep (default 256)\n"

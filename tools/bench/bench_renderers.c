@@ -27,6 +27,8 @@ bool bench_renderer_is_deferred(int r) { return !renderer_table[r].forward; }
 
 bool bench_renderer_uses_volumes(int r) { return r == RENDERER_DEFERRED_VOLUMES; }
 
+bool bench_renderer_uses_stencil(int r) { return r == RENDERER_DEFERRED_STENCIL; }
+
 /* The naive forward loop ignores the cut-off's main effect (it loops over every light anyway). */
 bool bench_renderer_in_cutoff_sweep(int r) { return r != RENDERER_FORWARD_NAIVE; }
 
@@ -113,7 +115,8 @@ bool bench_read_linear(bench_renderers *br, int r, const gpu_scene *gs, float *r
     const fbo *src = &br->linear_target;
     if (r == RENDERER_DEFERRED_FULLSCREEN)
         return false; /* display-encodes in its only shader */
-    if (r == RENDERER_DEFERRED_VOLUMES || r == RENDERER_DEFERRED_VOLUMES_WINDOWED)
+    if (r == RENDERER_DEFERRED_VOLUMES || r == RENDERER_DEFERRED_VOLUMES_WINDOWED ||
+        r == RENDERER_DEFERRED_STENCIL)
         src = renderers_accum(&br->set); /* the RGBA16F sum of the last frame, before present */
     else if (!renderers_draw(&br->set, (renderer_id)r, gs, src->id, (renderer_draw_options){.linear_output = true},
                              NULL))

@@ -1,5 +1,5 @@
 /* bench_report.h - the benchmark's result files: every row as CSV for tools, and a Markdown page
- * with the targets, the crossover and one table per question for people (docs/08_compare.md shows
+ * with the targets, the crossover and one table per question for people (docs/compare.md shows
  * one). Every file is written to NAME.tmp and renamed into place, so a reader never sees half a file.
  *
  *   bench_report_write_csv(st)             OUT/bench.csv: one row per (case, renderer), NA where a

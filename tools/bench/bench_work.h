@@ -1,12 +1,8 @@
 /* bench_work.h - what the benchmark measures besides time: the least lighting work a frame needs,
  * and how far a picture is from the exact one. No GL here: everything works on read-back arrays.
  *
- *   bench_work_positions(depth, w, h, view_proj, out)   world position of every pixel's visible
- *                                          surface (x, y, z, 1) or (0, 0, 0, 0) for background,
- *                                          unprojected in double with the inverse of view_proj
- *   bench_work_ideal_pairs(pos, w, h, view_proj, lights, count)
- *                                          (pixel, light) pairs whose surface point lies within the
- *                                          light's radius: the work a perfect light volume would do
+ *   (the least work, light_work_positions and light_work_ideal_pairs, is in common/light_work.h:
+ *   the window's overlay counts it too)
  *   bench_work_hdr_error(a, b, w, h, stats)
  *                                          max / mean absolute difference and PSNR (peak 1.0) over
  *                                          R, G, B of two linear RGBA float pictures
@@ -18,6 +14,7 @@
 #define TOOLS_BENCH_WORK_H
 
 #include "gpu_scene.h"
+#include "light_work.h"
 
 #include <stdbool.h>
 
@@ -27,9 +24,6 @@ typedef struct bench_error {
 
 #define BENCH_PSNR_CAP 100.0
 
-void bench_work_positions(const float *depth, int width, int height, const float *view_proj, double *out);
-long long bench_work_ideal_pairs(const double *pos, int width, int height, const float *view_proj,
-                                 const gpu_light *lights, int count);
 void bench_work_hdr_error(const float *a, const float *b, int width, int height, bench_error *out);
 
 #endif
