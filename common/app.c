@@ -146,12 +146,13 @@ static void next_choice(const char *const *choices, int *index, const char *what
     log_info("%s: %s", what, choices[*index]);
 }
 
-static void save_numbered_screenshot(const app *a)
+/* P: the last frame's picture as shown (the comparison too), without the overlay. */
+static void save_numbered_screenshot(const app *a, const app_window *w)
 {
     char path[64];
     mkdir("out", 0755);
     snprintf(path, sizeof path, "out/%s-%ld.png", a->cli->program, a->frame_index);
-    app_window_save(&a->target, path);
+    app_window_save(w->shown, path);
 }
 
 /* One key, as common/keys.c's table says; returns false to quit. */
@@ -172,7 +173,7 @@ static bool handle_key(app *a, const app_desc *desc, app_window *w, int key, boo
     case KEY_ACTION_CUTOFF_HALF: a->cutoff = a->cutoff > 0 ? a->cutoff / 2 : LIGHT_DEFAULT_CUTOFF; break;
     case KEY_ACTION_CUTOFF_DOUBLE: a->cutoff = a->cutoff > 0 ? a->cutoff * 2 : LIGHT_DEFAULT_CUTOFF; break;
     case KEY_ACTION_CUTOFF_EXACT: a->cutoff = a->cutoff > 0 ? 0 : LIGHT_DEFAULT_CUTOFF; break;
-    case KEY_ACTION_SCREENSHOT: save_numbered_screenshot(a); break;
+    case KEY_ACTION_SCREENSHOT: save_numbered_screenshot(a, w); break;
     default: break; /* the window's own (app_window_key), or a mouse gesture */
     }
     return true;

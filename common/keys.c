@@ -29,7 +29,7 @@ static const key_binding table[] = {
     {KEY_SPACE, "Space", NULL, KEY_ACTION_PAUSE, "pause / resume the animation"},
     {'H', "H", NULL, KEY_ACTION_OVERLAY, "on-screen overlay: what is drawn and what it costs"},
     {KEY_F1, "F1", NULL, KEY_ACTION_KEY_LIST, "list these keys on screen"},
-    {'P', "P", NULL, KEY_ACTION_SCREENSHOT, "save a screenshot into out/"},
+    {'P', "P", NULL, KEY_ACTION_SCREENSHOT, "save the picture (the comparison too, never the overlay) into out/"},
     {KEY_ESCAPE, "Esc", NULL, KEY_ACTION_QUIT, "quit"},
     {'Q', "Q", NULL, KEY_ACTION_QUIT, "quit"},
     {'I', "I", "04", KEY_ACTION_CHAPTER, "scale the volume mesh by 1 / inradius, or not"},
