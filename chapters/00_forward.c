@@ -10,7 +10,9 @@
  *      the depth test is GL_EQUAL with writes off, so only the visible fragment of each pixel
  *      pays for its lights.
  * The passes themselves (forward_build_light_lists, forward_draw_depth, forward_draw_shaded) are
- * in common/forward.c, because later chapters switch back to this renderer to compare.
+ * in common/forward.c, because later chapters switch back to this renderer to compare. A scene with
+ * glass (material opacity < 1) is drawn through a float buffer, the glass last, sorted and blended
+ * in linear radiance (chapter 12 explains why; docs/12_transparency.md).
  *
  * The renderers of this chapter turn the two optimisations on and off (common/renderers.c):
  *   forward           depth pre-pass + per-object light lists (the default, the best forward)
@@ -23,7 +25,7 @@
 #include "gl_util.h"
 #include "log.h"
 
-static const char *const renderers[] = {"forward", "forward-naive", "forward-prepass", "forward-lists", NULL};
+static const char *const renderers[] = {"forward", "forward-naive", "forward-prepass", "forward-lists", "forward-plus", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
@@ -62,6 +64,8 @@ static void log_lists(const app *a)
 
 static bool frame(app *a)
 {
+    if (app_renderer_is(a, "forward-plus")) /* chapter 11's Forward+, through the renderer table */
+        return app_render_forward(a);
     const forward_options o = renderer_table[renderer_find(a->cli->renderers[a->renderer])].forward_options;
     const gpu_scene *gs = &a->gs;
 

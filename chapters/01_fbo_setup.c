@@ -85,7 +85,7 @@ static bool resize(app *a) { return offscreen_create(a->width, a->height); }
 
 static bool frame(app *a)
 {
-    if (app_renderer_is(a, "forward"))
+    if (app_renderer_is_forward(a))
         return app_render_forward(a);
 
     /* 1. draw the scene (chapter 00's forward renderer) into our framebuffer instead of the target */

@@ -80,7 +80,7 @@ static bool draw_view(const app *a)
 
 static bool frame(app *a)
 {
-    if (app_renderer_is(a, "forward"))
+    if (app_renderer_is_forward(a))
         return app_render_forward(a);
 
     /* 1. geometry pass: each object once; gbuffer.frag writes location 0 (albedo) and

@@ -3,6 +3,7 @@
 
 #include "app_internal.h"
 #include "data_dir.h"
+#include "gbuffer.h"
 #include "gl_util.h"
 #include "image.h"
 #include "input.h"
@@ -18,6 +19,32 @@
 bool app_renderer_is(const app *a, const char *name)
 {
     return a->cli->renderers && strcmp(a->cli->renderers[a->renderer], name) == 0;
+}
+
+bool app_renderer_is_forward(const app *a)
+{
+    int id = a->cli->renderers ? renderer_find(a->cli->renderers[a->renderer]) : RENDERER_FORWARD;
+    return id >= 0 && renderer_table[id].forward;
+}
+
+/* A chapter that offers `forward` offers the strongest forward too: Forward+ (chapter 11) joins its
+ * list right after it, so --renderer and the R key reach it everywhere. */
+static const char *const *with_forward_plus(const char *const *list, const char **out, int capacity)
+{
+    int n = 0, forward_at = -1;
+    for (; list && list[n]; n++)
+        if (strcmp(list[n], "forward-plus") == 0)
+            return list;
+        else if (strcmp(list[n], "forward") == 0)
+            forward_at = n;
+    if (forward_at < 0 || n + 2 > capacity)
+        return list;
+    for (int i = 0, k = 0; i <= n; i++) {
+        out[k++] = list[i];
+        if (i == forward_at)
+            out[k++] = "forward-plus";
+    }
+    return out;
 }
 
 bool app_view_is(const app *a, const char *name)
@@ -403,7 +430,14 @@ static int app_setup(app *a, const app_desc *desc)
     a->query = gl_query_create();
     if (!frame_timer_create(&a->timer))
         return EXIT_CODE_RUNTIME;
-    return make_target(a) && (!desc->init || desc->init(a)) ? EXIT_CODE_OK : EXIT_CODE_RUNTIME;
+    /* --gbuffer: the layout of every G-buffer made from here on, the chapter's included; a reversed-Z
+     * layout only where the chapter's lighting pass (its pass state, set by init) can take it. */
+    const gbuffer_layout *layout = a->options->gbuffer ? gbuffer_layout_find(a->options->gbuffer) : NULL;
+    if (layout && !gbuffer_set_default_layout(layout))
+        return EXIT_CODE_USAGE;
+    if (!make_target(a) || (desc->init && !desc->init(a)))
+        return EXIT_CODE_RUNTIME;
+    return !layout || gbuffer_layout_fits_pass(layout, a->pass_state) ? EXIT_CODE_OK : EXIT_CODE_USAGE;
 }
 
 static void app_close(app *a, const app_desc *desc)
@@ -440,15 +474,15 @@ static int app_finish(app *a, loop *l, int rc)
     return rc;
 }
 
-static void app_init(app *a, const app_desc *desc, const cli_options *opt)
+static void app_init(app *a, const cli_desc *cli, const cli_options *opt)
 {
     memset(a, 0, sizeof *a);
     a->options = opt;
-    a->cli = &desc->cli;
+    a->cli = cli;
     a->width = opt->width;
     a->height = opt->height;
-    a->renderer = desc->cli.renderers ? cli_choice_index(desc->cli.renderers, opt->renderer) : 0;
-    a->view = desc->cli.views ? cli_choice_index(desc->cli.views, opt->view) : 0;
+    a->renderer = cli->renderers ? cli_choice_index(cli->renderers, opt->renderer) : 0;
+    a->view = cli->views ? cli_choice_index(cli->views, opt->view) : 0;
     a->time = opt->time;
     a->cutoff = opt->cutoff;
     a->shaded_pixels = -1;
@@ -458,6 +492,8 @@ int app_run(const app_desc *desc, int argc, char **argv)
 {
     cli_desc cli = desc->cli;
     cli.default_cutoff = LIGHT_DEFAULT_CUTOFF;
+    static const char *renderers_plus[32];
+    cli.renderers = with_forward_plus(cli.renderers, renderers_plus, 32);
     cli_options opt;
     int rc = cli_parse(argc, argv, &cli, &opt);
     if (rc != EXIT_CODE_OK)
@@ -471,8 +507,7 @@ int app_run(const app_desc *desc, int argc, char **argv)
     }
     data_dir_set(opt.data_dir);
     app a;
-    app_init(&a, desc, &opt);
-    a.cli = &cli;
+    app_init(&a, &cli, &opt);
     if (!opt.scene_path)
         opt.scene_path = data_dir_path(CLI_DEFAULT_SCENE, a.default_scene, sizeof a.default_scene)
                              ? a.default_scene

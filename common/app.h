@@ -6,6 +6,9 @@
  *   app_render_forward(a)       the forward renderer selected by --renderer or R (one of
  *                               renderer_table's forward names; "forward" otherwise) into a->target
  *   app_renderer_is(a, name)    the renderer currently selected (--renderer, or the R key)
+ *   app_renderer_is_forward(a)  whether it is one of renderer_table's forward renderers; every
+ *                               chapter that offers `forward` offers chapter 11's `forward-plus` too
+ *                               (the runner adds it to the chapter's list)
  *   app_view_is(a, name)        the view currently selected (--view, or the V key)
  *   app_extra(a, name)          the value of a chapter's own option
  *   app_extra_number(a, name, lo, hi, out)
@@ -61,6 +64,7 @@ typedef struct app_desc {
 int app_run(const app_desc *desc, int argc, char **argv);
 bool app_render_forward(app *a);
 bool app_renderer_is(const app *a, const char *name);
+bool app_renderer_is_forward(const app *a);
 bool app_view_is(const app *a, const char *name);
 const char *app_extra(const app *a, const char *name);
 bool app_extra_number(const app *a, const char *name, double lo, double hi, double *out);

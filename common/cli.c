@@ -28,6 +28,9 @@ static void print_choices(FILE *stream, const char *const *choices)
         fprintf(stream, "%s%s", i ? "|" : "", choices[i]);
 }
 
+const char *const cli_gbuffer_layouts[CLI_GBUFFER_LAYOUT_COUNT + 1] = {
+    "reference", "compact", "compact-d24s8", "reversed-z", "linear-albedo", "oct8", "oct16", NULL};
+
 void cli_print_help(const cli_desc *desc, FILE *stream)
 {
     fprintf(stream, "usage: %s [options]\n%s\n\noptions:\n", desc->program, desc->summary);
@@ -86,6 +89,16 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "                           scene's camera line: \"eye X Y Z target X Y Z [up X Y Z] [fovy F]\"\n"
             "  --falloff hard|windowed  how lights fade to their radius (default: the scene's, else hard):\n"
             "                           windowed multiplies by (1 - (d/r)^4)^2, so the cut-off leaves no step\n"
+            "  --gbuffer LAYOUT         the G-buffer's formats (common/gbuffer.h, docs/02_mrt_gbuffer.md):\n"
+            "                           compact       sRGB8 albedo + specular; normal in 2x12 bits +\n"
+            "                                         shininess in RGBA8; D32F: 12 bytes/pixel (default)\n"
+            "                           reference     sRGB8 albedo, RGBA16F normal + material, D32F: 16\n"
+            "                           compact-d24s8 compact with a 24-bit depth and stencil: 12\n"
+            "                           reversed-z    compact with a reversed float depth: 12 (GL 4.5 or\n"
+            "                                         ARB_clip_control; chapters 02-03 only)\n"
+            "                           linear-albedo compact with linear RGBA8 albedo: 12\n"
+            "                           oct8          compact with a 2x8-bit normal: 12\n"
+            "                           oct16         compact with a 2x16-bit normal in RGBA16: 16\n"
             "  --compare MODE           off|split|difference: forward left of a divider and this chapter's\n"
             "                           renderer right of it, or their difference beyond 1/255 as a heat map (key M)\n"
             "  --overlay                the on-screen overlay from the start, also in --screenshot (key H)\n"
@@ -345,6 +358,9 @@ static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc
         static const char *const falloffs[] = {"hard", "windowed", NULL};
         return parse_choice(desc, "falloff", option_value(argc, argv, i, "--falloff"), falloffs, &out->falloff);
     }
+    if (is_option(a, "--gbuffer"))
+        return parse_choice(desc, "G-buffer layout", option_value(argc, argv, i, "--gbuffer"),
+                            cli_gbuffer_layouts, &out->gbuffer);
     if (is_option(a, "--compare")) {
         static const char *const modes[] = {"off", "split", "difference", NULL};
         return parse_choice(desc, "compare mode", option_value(argc, argv, i, "--compare"), modes, &out->compare);

@@ -8,6 +8,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Chapter 12's glass passes: blended over what lies behind (straight alpha: A * source +
+ * (1 - A) * destination), tested against the opaque depth, never writing it; an object's far side
+ * (back faces) first, then its near side. */
+const gl_pass_state forward_glass_back_pass = {
+    .blend = {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}, .cull = GL_FRONT, .depth_func = GL_LEQUAL};
+const gl_pass_state forward_glass_front_pass = {
+    .blend = {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}, .cull = GL_BACK, .depth_func = GL_LEQUAL};
+const gl_pass_state *const forward_glass_passes[2] = {&forward_glass_back_pass, &forward_glass_front_pass};
+
 bool forward_create(forward *f)
 {
     memset(f, 0, sizeof *f);
@@ -29,6 +38,9 @@ void forward_destroy(forward *f)
     gl_program_destroy(&f->program);
     gl_program_destroy(&f->depth_program);
     gl_program_destroy(&f->linear_program);
+    gl_program_destroy(&f->glass_program);
+    gl_program_destroy(&f->present_program);
+    fbo_destroy(&f->hdr);
     gl_buffer_destroy(&f->list_buffer);
     gl_texture_destroy(&f->list_texture);
     gl_query_destroy(&f->query);
@@ -92,7 +104,8 @@ void forward_draw_depth(const forward *f, const gpu_scene *gs)
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-/* The linear program is built on first use: only the benchmark and the tests ask for it. */
+/* The linear program is built on first use: only the benchmark, the tests and scenes with
+ * transparent objects ask for it. */
 static GLuint shading_program(forward *f, bool linear)
 {
     if (linear && !f->linear_program)
@@ -100,12 +113,9 @@ static GLuint shading_program(forward *f, bool linear)
     return linear ? f->linear_program : f->program;
 }
 
-bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options)
+/* What both shading programs read: the lights, the objects, the light lists, the eye. */
+static void bind_shading(const forward *f, const gpu_scene *gs, GLuint program, bool light_lists)
 {
-    GLuint program = shading_program(f, options.linear_output);
-    if (!program)
-        return false;
-    frame_timer_mark("shading");
     glUseProgram(program);
     gpu_scene_bind_lights(gs, program, SHADER_UNIT_LIGHTS);
     gpu_scene_bind_objects(gs, program, SHADER_UNIT_OBJECTS);
@@ -114,11 +124,129 @@ bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options option
     glActiveTexture(GL_TEXTURE0);
     glUniform1i(glGetUniformLocation(program, "u_light_list"), SHADER_UNIT_LIGHT_LIST);
     glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);
-    glUniform1i(glGetUniformLocation(program, "u_use_list"), options.light_lists);
+    glUniform1i(glGetUniformLocation(program, "u_use_list"), light_lists);
+}
+
+/* The opaque objects, with the caller's depth state (chapter 00's pass 3). */
+static bool draw_opaque(forward *f, const gpu_scene *gs, forward_options options)
+{
+    GLuint program = shading_program(f, options.linear_output);
+    if (!program)
+        return false;
+    frame_timer_mark("shading");
+    bind_shading(f, gs, program, options.light_lists);
     gl_samples_begin(f->query, options.count_pixels);
     gpu_scene_draw(gs, program);
     f->shaded_pixels = gl_samples_end(f->query, options.count_pixels);
     return true;
+}
+
+bool forward_draw_transparent(forward *f, const gpu_scene *gs, const forward_glass *glass)
+{
+    if (!f->glass_program)
+        f->glass_program = gl_program_load("forward.vert", "forward.frag", "TRANSPARENT 1");
+    if (!f->glass_program)
+        return false;
+    frame_timer_mark("transparent");
+    bind_shading(f, gs, f->glass_program, glass->light_lists);
+    glUniform1i(glGetUniformLocation(f->glass_program, "u_view"),
+                glass->overdraw ? SHADER_VIEW_OVERDRAW : SHADER_VIEW_LIT);
+    const gl_pass_state *const *passes = glass->passes ? glass->passes : forward_glass_passes;
+    int pass_count = glass->passes ? glass->pass_count : 2;
+    gl_samples_begin(f->query, glass->count_pixels);
+    gpu_scene_draw_transparent(gs, f->glass_program, glass->order, passes, pass_count);
+    f->shaded_pixels = gl_samples_end(f->query, glass->count_pixels);
+    gl_pass_state_reset();
+    return true;
+}
+
+/* The opaque objects, then the glass over them, into the (float) framebuffer bound. */
+static bool draw_opaque_then_glass(forward *f, const gpu_scene *gs, forward_options options)
+{
+    if (!draw_opaque(f, gs, options))
+        return false;
+    long opaque = f->shaded_pixels;
+    const forward_glass glass = {.light_lists = options.light_lists, .count_pixels = options.count_pixels};
+    if (!forward_draw_transparent(f, gs, &glass))
+        return false;
+    if (options.count_pixels)
+        f->shaded_pixels += opaque;
+    return true;
+}
+
+/* Depth from one framebuffer to another (both GL_DEPTH_COMPONENT32F), whatever the depth mask. */
+static void copy_depth(GLuint from, GLuint to, int width, int height)
+{
+    GLboolean mask;
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &mask);
+    glDepthMask(GL_TRUE);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    glDepthMask(mask);
+}
+
+/* f->hdr at the view's size, and the present program (scenes with glass only). */
+static bool hdr_follow_view(forward *f, int width, int height)
+{
+    if (!f->present_program)
+        f->present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
+    if (!f->present_program)
+        return false;
+    if (f->hdr.id && f->hdr.width == width && f->hdr.height == height)
+        return true;
+    fbo_destroy(&f->hdr);
+    const fbo_desc desc = {.color_formats = {GL_RGBA32F},
+                           .color_count = 1,
+                           .depth_format = GL_DEPTH_COMPONENT32F,
+                           .name = "forward linear radiance"};
+    return fbo_create(&f->hdr, &desc, width, height);
+}
+
+/* A scene with glass, for a display-encoded framebuffer: the frame in linear radiance in f->hdr, so
+ * that the glass blends with linear radiance, then display-encoded once (forward.h). */
+static bool draw_through_hdr(forward *f, const gpu_scene *gs, forward_options options)
+{
+    GLint bound = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    GLuint target = (GLuint)bound;
+    int w = gs->view.width, h = gs->view.height;
+    if (!hdr_follow_view(f, w, h))
+        return false;
+    copy_depth(target, f->hdr.id, w, h); /* cleared, or the pre-pass's */
+    glBindFramebuffer(GL_FRAMEBUFFER, f->hdr.id);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    options.linear_output = true;
+    if (!draw_opaque_then_glass(f, gs, options))
+        return false;
+
+    frame_timer_mark("present");
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    gl_pass_state_apply(&(gl_pass_state){0}); /* no depth test: the target's depth is copied below */
+    glUseProgram(f->present_program);
+    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
+    glBindTexture(GL_TEXTURE_2D, f->hdr.color[0]);
+    glUniform1i(glGetUniformLocation(f->present_program, "u_accum"), SHADER_UNIT_IMAGE);
+    glUniform1i(glGetUniformLocation(f->present_program, "u_tonemap"), SHADER_TONEMAP_NONE);
+    glUniform1f(glGetUniformLocation(f->present_program, "u_exposure"), 1.0f);
+    glUniform1i(glGetUniformLocation(f->present_program, "u_view"), SHADER_VIEW_LIT);
+    gl_draw_fullscreen();
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindVertexArray(0);
+    copy_depth(f->hdr.id, target, w, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    gl_pass_state_reset();
+    return true;
+}
+
+bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options)
+{
+    if (gs->transparent_count == 0)
+        return draw_opaque(f, gs, options);
+    if (options.linear_output)
+        return draw_opaque_then_glass(f, gs, options);
+    return draw_through_hdr(f, gs, options);
 }
 
 bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_options options)

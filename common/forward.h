@@ -7,12 +7,32 @@
  *                                           leaves gl_pass_state_reset()'s state
  *   forward_build_light_lists(f, gs)        per object, the lights that reach it, uploaded
  *   forward_draw_depth(f, gs)               every object into the depth buffer only
- *   forward_draw_shaded(f, gs, options)     every object shaded (lists when options.light_lists),
- *                                           with whatever depth state the caller set
+ *   forward_draw_shaded(f, gs, options)     every opaque object shaded (lists when options.light_lists),
+ *                                           with whatever depth state the caller set; then, if the
+ *                                           scene has transparent objects, those (see below)
+ *   forward_draw_transparent(f, gs, glass)  the transparent objects alone into the framebuffer bound
+ *                                           (a float one): forward-shaded in linear radiance and
+ *                                           blended over what it holds, object by object in
+ *                                           glass->order, each with every state of glass->passes;
+ *                                           leaves gl_pass_state_reset()'s state (chapter 12)
  *   forward_shaded_pixels(f)                fragments that passed the depth test in the last
- *                                           shading pass (GL_SAMPLES_PASSED), when counting is on
+ *                                           shading pass (GL_SAMPLES_PASSED), when counting is on:
+ *                                           the opaque objects' plus the transparent ones'
  *
  * Objects are drawn in batches (gpu_scene_draw): one instanced draw per run of objects sharing a mesh.
+ *
+ * Transparent objects (material opacity A < 1; docs/12_transparency.md) are in no depth pre-pass and
+ * no batch: after the opaque ones, each is drawn on its own, back to front (gpu_scene sorts them),
+ * with forward_glass_back_pass (its far side) then forward_glass_front_pass (its near side), blended
+ * final = A * shaded + (1 - A) * behind in LINEAR radiance, tested against the opaque depth and not
+ * writing it. So that the blend sees linear radiance, as chapter 12's deferred frame blends into its
+ * float accumulation buffer, forward_draw_shaded on such a scene draws the frame into f->hdr (RGBA32F)
+ * instead of the display-encoded framebuffer bound: the bound framebuffer's depth (cleared, or the
+ * pre-pass's; it must be GL_DEPTH_COMPONENT32F) is copied in, the opaque objects are shaded in linear
+ * radiance, the glass blended over them, and the sum display-encoded once into the bound framebuffer
+ * (accum_present.frag, the deferred chapters' present pass), whose depth gets the opaque depth back.
+ * With options.linear_output the bound framebuffer is float already: the glass is blended there.
+ * A scene without transparent objects draws exactly as before, straight into the bound framebuffer.
  * Depth ties: every pass that draws the scene uses GL_LEQUAL, so where two surfaces have exactly
  * the same depth the one drawn last wins, with or without a pre-pass and in the G-buffer alike.
  *
@@ -26,6 +46,7 @@
 #ifndef COMMON_FORWARD_H
 #define COMMON_FORWARD_H
 
+#include "fbo.h"
 #include "gpu_scene.h"
 
 typedef struct forward_options {
@@ -35,8 +56,25 @@ typedef struct forward_options {
     bool linear_output;
 } forward_options;
 
+/* How forward_draw_transparent draws the glass; zero is what forward_draw_shaded draws. */
+typedef struct forward_glass {
+    const gl_pass_state *const *passes; /* per object, in turn; NULL: forward_glass_passes */
+    int pass_count;
+    gpu_scene_order order;              /* GPU_SCENE_BACK_TO_FRONT, or the scene's order (a bug) */
+    bool light_lists;                   /* forward_build_light_lists ran this frame: use them */
+    bool count_pixels;
+    bool overdraw; /* each fragment adds 1 / SHADER_OVERDRAW_SCALE instead of its colour (passes
+                      that blend GL_ONE, GL_ONE: the overdraw view's count) */
+} forward_glass;
+
+/* Chapter 12's two literals (chapters/12_transparency.c), kept here for every forward frame. */
+extern const gl_pass_state forward_glass_back_pass, forward_glass_front_pass;
+extern const gl_pass_state *const forward_glass_passes[2];
+
 typedef struct forward {
     GLuint program, depth_program, linear_program;
+    GLuint glass_program, present_program; /* built on first use: scenes with transparent objects */
+    fbo hdr;                               /* such a scene's frame in linear radiance (RGBA32F) */
     GLuint list_buffer, list_texture;
     GLuint query;
     int *list;         /* per object (first, count), then the light indices, object after object */
@@ -51,6 +89,7 @@ bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_opti
 bool forward_build_light_lists(forward *f, const gpu_scene *gs);
 void forward_draw_depth(const forward *f, const gpu_scene *gs);
 bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options);
+bool forward_draw_transparent(forward *f, const gpu_scene *gs, const forward_glass *glass);
 long forward_shaded_pixels(const forward *f);
 
 #endif

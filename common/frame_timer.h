@@ -26,7 +26,7 @@
 #include <glad/gl.h>
 #include <stdbool.h>
 
-#define FRAME_TIMER_MAX_PASSES 8
+#define FRAME_TIMER_MAX_PASSES 12
 
 typedef struct frame_times {
     int count;                            /* passes */

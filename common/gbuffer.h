@@ -1,6 +1,7 @@
 /* gbuffer.h - the G-buffer: what the lighting passes need to know about each visible pixel.
  *
- *   gbuffer_create(g, width, height)     textures + framebuffer + the geometry-pass program
+ *   gbuffer_create(g, width, height)     textures + framebuffer + the geometry-pass program, in the
+ *                                        default layout
  *   gbuffer_create_with(g, width, height, desc)
  *                                        the same with options (desc may be NULL: the defaults)
  *   gbuffer_attach_stencil(g, framebuffer)
@@ -14,39 +15,126 @@
  *                                        gl_pass_state_reset()'s state
  *   gbuffer_bind_textures(g, gs, program, first_unit)
  *                                        u_gbuffer_albedo, u_gbuffer_normal, u_gbuffer_depth on units
- *                                        first_unit..first_unit+2, plus u_inv_view_proj and u_eye
- *                                        (with a stencil: the depth's copy, see below)
- *   gbuffer_bytes_per_pixel()            this layout's size (a naive layout is GBUFFER_NAIVE_BYTES)
+ *                                        first_unit..first_unit+2, plus the layout's decoding
+ *                                        (u_gbuffer_normal_encoding, u_gbuffer_reversed_z),
+ *                                        u_inv_view_proj and u_eye (with a stencil: the depth's copy)
+ *   gbuffer_bytes_per_pixel()            the default layout's size without stencil (a naive layout
+ *                                        is GBUFFER_NAIVE_BYTES)
  *
- * Layout (nothing the shading model does not read):
- *   RT0  GL_SRGB8_ALPHA8  albedo.rgb (sRGB-encoded: 8 bits spent where the eye sees them), a unused
- *   RT1  GL_RGBA16F       octahedral normal (x, y), specular, shininess
- *   depth GL_DEPTH_COMPONENT32F  position is rebuilt from it with the inverse view-projection;
- *         GL_DEPTH32F_STENCIL8 with desc.stencil (chapter 08): the same 32-bit float depth, plus 8
- *         stencil bits that gbuffer_render clears to 0 (the depth is the same values to the bit).
- *         gbuffer_render then copies the depth (glBlitFramebuffer), and the shaders read the copy:
- *         a pass that writes the stencil must not sample the texture it writes (a feedback loop,
- *         undefined in GL; llvmpipe finishes all queued drawing before each such draw)
- * shaders/gbuffer_read.glsl decodes a pixel: gbuffer_read(ivec2 pixel) -> surface.
+ *   gbuffer_layout_find(name)            the layout called name (--gbuffer), NULL when none is
+ *   gbuffer_layout_bytes(layout, stencil)
+ *                                        bytes per pixel: the bits its formats hold, / 8
+ *   gbuffer_layout_depth_format(layout, stencil)
+ *   gbuffer_layout_available(layout)     false, with one line logged, where the context cannot draw
+ *                                        it (reversed-Z without glClipControl); needs a context
+ *   gbuffer_set_default_layout(layout)   the layout gbuffer_create uses from now on (the runner's
+ *                                        --gbuffer); false, logged, when not available
+ *   gbuffer_default_layout()
+ *   gbuffer_layout_fits_pass(layout, pass)
+ *                                        false, with one line logged, for a reversed-Z layout and a
+ *                                        lighting pass written for standard depth (see below)
+ *
+ *   gbuffer_depth_test_begin(g, gs, view, state)
+ *   gbuffer_depth_test_end(g)            around a pass that depth-tests against g's depth: with a
+ *                                        reversed-Z layout they set glClipControl's [0,1] depth,
+ *                                        put the reversed projection in view->view.view_proj (view is
+ *                                        a copy of gs) and mirror state->depth_func (GREATER <-> LESS,
+ *                                        GEQUAL <-> LEQUAL); with the others they only copy
+ *
+ * Layouts (gbuffer_layouts[]; docs/02_mrt_gbuffer.md has what each loses, measured):
+ *   RT0  albedo.rgb: GL_SRGB8_ALPHA8 (sRGB-encoded: 8 bits spent where the eye sees them) or
+ *        GL_RGBA8 (linear); alpha: specular S in 8 bits (within 1/510; above 1 clamps), except in
+ *        `reference`, whose alpha is unused
+ *   RT1  the octahedral normal (shaders/octahedral.glsl), and the material RT0 has no room for:
+ *          SHADER_GBUFFER_NORMAL_HALF    GL_RGBA16F  x, y half floats (best of 4), S, P   8 bytes
+ *          SHADER_GBUFFER_NORMAL_SHORTS  GL_RGBA16   x, y 16-bit codes, -, P             8 bytes
+ *          SHADER_GBUFFER_NORMAL_PACKED  GL_RGBA8    x, y 12-bit codes over r, g, b; P   4 bytes
+ *          SHADER_GBUFFER_NORMAL_BYTES   GL_RGBA8    x, y 8-bit codes, -, P              4 bytes
+ *        an n-bit code q is (q - m) / m, m = 2^(n-1) - 1, so 0 and +-1 are exact, and the encoder
+ *        keeps the best of the four code pairs around the exact value (max error 0.64, 0.040,
+ *        0.0025 degrees for 8, 12, 16 bits; half floats 0.040: tests/unit/test_octahedral.c);
+ *        shininess in a fixed-point channel is P = 1 + 255 c: the integers 1..256 exactly
+ *   depth GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8, or GL_DEPTH_COMPONENT32F reversed (near 1,
+ *        far 0, cleared to 0, GL_GEQUAL, drawn with glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE):
+ *        float's precision spread evenly over distance; refused without clip control). Position
+ *        is rebuilt from it with the inverse view-projection. With desc.stencil a float depth
+ *        becomes GL_DEPTH32F_STENCIL8 (the same depth values to the bit); D24S8 has its stencil
+ *        already. gbuffer_render clears the stencil to 0, then copies the depth
+ *        (glBlitFramebuffer), and the shaders read the copy: a pass that writes the stencil must
+ *        not sample the texture it writes (a feedback loop, undefined in GL; llvmpipe finishes all
+ *        queued drawing before each such draw)
+ *   name           RT0            RT1             depth          bytes (with stencil: D32F_S8 is
+ *                                                                       40 bits, 64 on most GPUs)
+ *   reference      SRGB8_ALPHA8   RGBA16F HALF    D32F           16 (17)
+ *   compact        SRGB8_ALPHA8   RGBA8 PACKED    D32F           12 (13)   <- the default
+ *   compact-d24s8  SRGB8_ALPHA8   RGBA8 PACKED    D24S8          12 (12)
+ *   reversed-z     SRGB8_ALPHA8   RGBA8 PACKED    D32F reversed  12 (13)
+ *   linear-albedo  RGBA8          RGBA8 PACKED    D32F           12 (13)
+ *   oct8           SRGB8_ALPHA8   RGBA8 BYTES     D32F           12 (13)
+ *   oct16          SRGB8_ALPHA8   RGBA16 SHORTS   D32F           16 (17)
+ * The default keeps a float depth: with D24S8 chapters 07 and 08 leave the course's 1/255 bound
+ * against forward on the city (docs/02_mrt_gbuffer.md). shaders/gbuffer_read.glsl decodes a pixel
+ * of any layout (uniforms from gbuffer_bind_textures): gbuffer_read(ivec2 pixel) -> surface.
+ *
+ * Reversed-Z flips every depth comparison against the G-buffer and needs the reversed projection
+ * wherever something is depth-tested against it: gbuffer_depth_test_begin/end. The lighting passes
+ * of chapters 04 on are written for standard depth (their pass state, and light_volume.frag's
+ * `depth >= 1.0`), so the runner refuses reversed-z wherever a chapter sets a lighting pass state
+ * (gbuffer_layout_fits_pass); chapters 02 and 03 read depth through gbuffer_read.glsl only and
+ * take it.
  */
 #ifndef COMMON_GBUFFER_H
 #define COMMON_GBUFFER_H
 
 #include "fbo.h"
+#include "gl_util.h"
 #include "gpu_scene.h"
 
 /* position RGBA16F (8) + normal RGBA16F (8) + albedo RGBA8 (4) + depth 32 bit (4) */
 #define GBUFFER_NAIVE_BYTES 24
 
+typedef enum gbuffer_depth {
+    GBUFFER_DEPTH_D24S8,
+    GBUFFER_DEPTH_D32F,
+    GBUFFER_DEPTH_D32F_REVERSED,
+} gbuffer_depth;
+
+typedef struct gbuffer_layout {
+    const char *name;     /* what --gbuffer takes */
+    GLenum albedo_format; /* RT0 */
+    GLenum normal_format; /* RT1 */
+    int normal_encoding;  /* SHADER_GBUFFER_NORMAL_* */
+    gbuffer_depth depth;
+    const char *loses;    /* against the geometry pass's exact floats, in a few words */
+} gbuffer_layout;
+
+/* gbuffer_layouts[] in this order, which is cli_gbuffer_layouts[]'s (common/cli.h, the GL-free command
+ * line, names them too; tests/gbuffer/test_gbuffer_layouts.c checks that they agree). */
+typedef enum gbuffer_layout_id {
+    GBUFFER_LAYOUT_REFERENCE,
+    GBUFFER_LAYOUT_COMPACT,
+    GBUFFER_LAYOUT_COMPACT_D24S8,
+    GBUFFER_LAYOUT_REVERSED_Z,
+    GBUFFER_LAYOUT_LINEAR_ALBEDO,
+    GBUFFER_LAYOUT_OCT8,
+    GBUFFER_LAYOUT_OCT16,
+    GBUFFER_LAYOUT_COUNT
+} gbuffer_layout_id;
+
+#define GBUFFER_LAYOUT_DEFAULT GBUFFER_LAYOUT_COMPACT
+
+extern const gbuffer_layout gbuffer_layouts[GBUFFER_LAYOUT_COUNT];
+
 /* Options; zero is the default. */
 typedef struct gbuffer_desc {
-    bool stencil; /* a depth-stencil target (GL_DEPTH32F_STENCIL8) instead of depth only */
+    bool stencil; /* a depth-stencil target (D24S8, or D32F_S8 for a float depth) */
+    const gbuffer_layout *layout; /* NULL: gbuffer_default_layout() */
 } gbuffer_desc;
 
 typedef struct gbuffer {
     fbo fbo;        /* color[0] albedo, color[1] normal/material, depth (and stencil) */
     GLuint program; /* geometry pass */
-    gbuffer_desc desc;
+    gbuffer_desc desc; /* desc.layout is never NULL once created */
     fbo depth_copy; /* with desc.stencil: the depth, copied after the geometry pass, for the shaders */
 } gbuffer;
 
@@ -58,5 +146,16 @@ void gbuffer_destroy(gbuffer *g);
 bool gbuffer_render(gbuffer *g, const gpu_scene *gs);
 void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program, int first_unit);
 int gbuffer_bytes_per_pixel(void);
+
+const gbuffer_layout *gbuffer_layout_find(const char *name);
+int gbuffer_layout_bytes(const gbuffer_layout *layout, bool stencil);
+GLenum gbuffer_layout_depth_format(const gbuffer_layout *layout, bool stencil);
+bool gbuffer_layout_available(const gbuffer_layout *layout);
+bool gbuffer_set_default_layout(const gbuffer_layout *layout);
+const gbuffer_layout *gbuffer_default_layout(void);
+bool gbuffer_layout_fits_pass(const gbuffer_layout *layout, const gl_pass_state *pass);
+
+void gbuffer_depth_test_begin(const gbuffer *g, const gpu_scene *gs, gpu_scene *view, gl_pass_state *state);
+void gbuffer_depth_test_end(const gbuffer *g);
 
 #endif

@@ -247,6 +247,28 @@ GLuint gl_program_load(const char *vert, const char *frag, const char *defines)
     return link(vs, fs, vert, frag);
 }
 
+GLuint gl_compute_program_load(const char *comp, const char *defines)
+{
+    GLuint cs = compile(GL_COMPUTE_SHADER, comp, NULL, defines);
+    if (!cs)
+        return 0;
+    GLuint p = glCreateProgram();
+    glAttachShader(p, cs);
+    glLinkProgram(p);
+    glDeleteShader(cs);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096];
+        glGetProgramInfoLog(p, sizeof log, NULL, log);
+        log_error("linking %s failed: %s", comp, log);
+        glDeleteProgram(p);
+        return 0;
+    }
+    state.live_objects++;
+    return p;
+}
+
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines)
 {
     char vname[160], fname[160];

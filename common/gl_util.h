@@ -6,6 +6,9 @@
  *   gl_program_create(name, vert_text, frag_text, defines)
  *                                         the same from source text in memory (tests); `name` labels
  *                                         its messages, and #include still reads from shaders/
+ *   gl_compute_program_load(comp, defines)
+ *                                         the same for one compute shader, shaders/<comp> (GL 4.3:
+ *                                         the caller checks GLAD_GL_VERSION_4_3 first)
  *   gl_program_destroy(&program)
  *   gl_texture_create / gl_buffer_create / gl_framebuffer_create / gl_vertex_array_create / gl_query_create
  *   / gl_renderbuffer_create
@@ -38,6 +41,7 @@
 #include <stddef.h>
 
 GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
+GLuint gl_compute_program_load(const char *comp, const char *defines);
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
 void gl_program_destroy(GLuint *program);
 

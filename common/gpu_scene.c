@@ -30,9 +30,12 @@ bool gpu_scene_create(const scene *src, gpu_scene *out)
     out->normal_matrix = calloc((size_t)src->object_count + 1, sizeof *out->normal_matrix);
     out->bounds = calloc((size_t)src->object_count + 1, sizeof *out->bounds);
     out->batches = calloc((size_t)src->object_count + 1, sizeof *out->batches);
+    out->transparent = calloc((size_t)src->object_count + 1, sizeof *out->transparent);
+    out->back_to_front = calloc((size_t)src->object_count + 1, sizeof *out->back_to_front);
+    out->sort_keys = calloc((size_t)src->object_count + 1, sizeof *out->sort_keys);
     out->object_texels = calloc(((size_t)src->object_count + 1) * SHADER_OBJECT_TEXELS * 4, sizeof(float));
     if (!out->meshes || !out->world || !out->normal_matrix || !out->bounds || !out->batches ||
-        !out->object_texels) {
+        !out->transparent || !out->back_to_front || !out->sort_keys || !out->object_texels) {
         log_error("out of memory for the scene's %d objects", src->object_count);
         gpu_scene_destroy(out);
         return false;
@@ -43,13 +46,20 @@ bool gpu_scene_create(const scene *src, gpu_scene *out)
             return false;
         }
     }
+    /* Opaque objects into batches (a batch's objects are consecutive: instance k is object first + k);
+     * transparent ones into their own list, drawn one by one in the order the frame needs. */
     for (int i = 0; i < src->object_count; i++) {
-        int m = src->objects[i].mesh;
+        const scene_object *o = &src->objects[i];
+        if (src->materials[o->material].opacity < 1.0f) {
+            out->transparent[out->transparent_count] = out->back_to_front[out->transparent_count] = i;
+            out->transparent_count++;
+            continue;
+        }
         gpu_batch *last = out->batch_count ? &out->batches[out->batch_count - 1] : NULL;
-        if (last && last->mesh == m)
+        if (last && last->mesh == o->mesh && last->first + last->count == i)
             last->count++;
         else
-            out->batches[out->batch_count++] = (gpu_batch){.mesh = m, .first = i, .count = 1};
+            out->batches[out->batch_count++] = (gpu_batch){.mesh = o->mesh, .first = i, .count = 1};
     }
     out->light_buffer = gl_buffer_create();
     out->light_texture = gl_texture_create();
@@ -69,6 +79,9 @@ void gpu_scene_destroy(gpu_scene *gs)
     gl_texture_destroy(&gs->object_texture);
     free(gs->meshes);
     free(gs->batches);
+    free(gs->transparent);
+    free(gs->back_to_front);
+    free(gs->sort_keys);
     free(gs->object_texels);
     free(gs->world);
     free(gs->normal_matrix);
@@ -121,12 +134,33 @@ static void update_objects(gpu_scene *gs, float time)
         }
         const scene_material *m = &s->materials[o->material];
         const float material[4] = {m->albedo[0], m->albedo[1], m->albedo[2], m->specular};
-        const float shininess[4] = {m->shininess, 0, 0, 0};
+        const float shininess[4] = {m->shininess, m->opacity, 0, 0};
         memcpy(t + 4 * SHADER_OBJECT_TEXEL_MATERIAL, material, sizeof material);
         memcpy(t + 4 * SHADER_OBJECT_TEXEL_SHININESS, shininess, sizeof shininess);
     }
     size_t bytes = ((size_t)s->object_count + 1) * SHADER_OBJECT_TEXELS * 4 * sizeof(float);
     gl_texture_buffer_upload(gs->object_buffer, gs->object_texture, GL_RGBA32F, gs->object_texels, bytes);
+}
+
+/* Farthest first; at equal distances the scene's order, so every renderer draws the same order. */
+static int farther_first(const void *a, const void *b)
+{
+    const gpu_sort_key *x = a, *y = b;
+    if (x->distance2 != y->distance2)
+        return x->distance2 > y->distance2 ? -1 : 1;
+    return (x->object > y->object) - (x->object < y->object);
+}
+
+/* The transparent objects back to front, by their bounding spheres' centres (after update_objects). */
+static void sort_transparent(gpu_scene *gs)
+{
+    for (int k = 0; k < gs->transparent_count; k++) {
+        int i = gs->transparent[k];
+        gs->sort_keys[k] = (gpu_sort_key){glm_vec3_distance2(gs->view.eye, gs->bounds[i]), i};
+    }
+    qsort(gs->sort_keys, (size_t)gs->transparent_count, sizeof *gs->sort_keys, farther_first);
+    for (int k = 0; k < gs->transparent_count; k++)
+        gs->back_to_front[k] = gs->sort_keys[k].object;
 }
 
 /* A spot's unit axis and the cosines of its half-angles, in double; a point light: no cone. */
@@ -202,6 +236,7 @@ bool gpu_scene_update(gpu_scene *gs, float time, double cutoff, int width, int h
     gs->cutoff = cutoff;
     update_view(gs, width, height);
     update_objects(gs, time);
+    sort_transparent(gs);
     return update_lights(gs, time, cutoff);
 }
 
@@ -232,6 +267,21 @@ void gpu_scene_draw(const gpu_scene *gs, GLuint program)
         const gpu_batch *batch = &gs->batches[b];
         glUniform1i(first, batch->first);
         mesh_draw_instanced(&gs->meshes[batch->mesh], batch->count);
+    }
+}
+
+void gpu_scene_draw_transparent(const gpu_scene *gs, GLuint program, gpu_scene_order order,
+                                const gl_pass_state *const passes[], int pass_count)
+{
+    const int *objects = order == GPU_SCENE_BACK_TO_FRONT ? gs->back_to_front : gs->transparent;
+    GLint first = glGetUniformLocation(program, "u_first_object");
+    for (int k = 0; k < gs->transparent_count; k++) {
+        int i = objects[k];
+        glUniform1i(first, i);
+        for (int p = 0; p < pass_count; p++) {
+            gl_pass_state_apply(passes[p]);
+            mesh_draw_instanced(&gs->meshes[gs->src->objects[i].mesh], 1);
+        }
     }
 }
 

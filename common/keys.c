@@ -18,7 +18,7 @@ static const key_binding table[] = {
     {'G', "G", NULL, KEY_ACTION_ADD_LIGHT, "add a light in front of the camera"},
     {'=', "+", NULL, KEY_ACTION_LIGHTS_DOUBLE, "double the generated lights (as --lights)"},
     {'-', "-", NULL, KEY_ACTION_LIGHTS_HALF, "halve the generated lights"},
-    {'R', "R", NULL, KEY_ACTION_RENDERER, "next renderer (--renderer lists them; every chapter has forward)"},
+    {'R', "R", NULL, KEY_ACTION_RENDERER, "next renderer (--renderer lists them; every chapter has forward and Forward+)"},
     {'V', "V", NULL, KEY_ACTION_VIEW, "next view (--view lists them: G-buffer targets, debug views)"},
     {'M', "M", NULL, KEY_ACTION_COMPARE, "compare with forward: split screen, difference (beyond 1/255, as a heat map), off"},
     {',', ",", NULL, KEY_ACTION_DIVIDER_LEFT, "move the split's divider left (or drag it)"},
@@ -42,6 +42,7 @@ static const key_binding table[] = {
     {'B', "B", "08", KEY_ACTION_CHAPTER, "batches of lights whose rectangles do not overlap, or one light per pass"},
     {'X', "X", "08", KEY_ACTION_CHAPTER, "count where the depth test fails (right) or passes (wrong inside a volume)"},
     {'Z', "Z", "08", KEY_ACTION_CHAPTER, "depth clamp on / off"},
+    {'O', "O", "12", KEY_ACTION_CHAPTER, "glass order: back to front, or the scene's (wrong)"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])

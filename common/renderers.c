@@ -1,8 +1,15 @@
 /* renderers.c - see renderers.h. */
 #include "renderers.h"
 
-#include "frame_timer.h"
+#include "renderer_tiled.h"
 
+#include "frame_timer.h"
+#include "light_batches.h"
+#include "log.h"
+#include "shader_layout.h"
+#include "shader_log.h"
+
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,6 +24,13 @@ const renderer_info renderer_table[RENDERER_COUNT] = {
                                             "deferred-volumes with the windowed falloff: no cut-off step"},
     [RENDERER_DEFERRED_STENCIL] = {"deferred-stencil", "08",
                                    "per batch of lights, a stencil pass, then light where it is set"},
+    [RENDERER_DEFERRED_TILED] = {"deferred-tiled", "10",
+                                 "per-tile light lists, one pass reading the G-buffer once per pixel"},
+    [RENDERER_FORWARD_PLUS] = {"forward-plus", "11",
+                               "clustered forward: depth pre-pass, each fragment loops over its "
+                               "cluster's lights", true, {true, false}},
+    [RENDERER_DEFERRED_CLUSTERED] = {"deferred-clustered", "11",
+                                     "per-cluster light lists, one pass reading the G-buffer once per pixel"},
 };
 
 /* chapters/07_face_culling.c's volume state: added up, back faces behind the surface. */
@@ -66,8 +80,13 @@ static void stencil_destroy(renderer_stencil *st)
     gbuffer_destroy(&st->g);
 }
 
+
 void renderers_destroy(renderer_set *r)
 {
+    if (r->have_clusters)
+        clusters_destroy(&r->clusters);
+    if (r->have_tiled)
+        tiled_destroy(&r->tiled);
     if (r->have_stencil)
         stencil_destroy(&r->stencil);
     if (r->have_volumes)
@@ -116,10 +135,18 @@ static bool ensure_stencil(renderer_set *r, const gpu_scene *gs)
     return r->have_stencil;
 }
 
+
 static bool ensure(renderer_set *r, renderer_id id, const gpu_scene *gs)
 {
     if (id == RENDERER_DEFERRED_STENCIL)
         return ensure_stencil(r, gs);
+    if (id == RENDERER_DEFERRED_TILED)
+        return ensure_tiled(r, gs);
+    if (id == RENDERER_FORWARD_PLUS || id == RENDERER_DEFERRED_CLUSTERED) {
+        if (!r->have_clusters && !(r->have_clusters = clusters_create(&r->clusters, NULL)))
+            return false;
+        return id == RENDERER_FORWARD_PLUS || ensure_gbuffer(r, gs);
+    }
     if (renderer_table[id].forward)
         return r->have_forward || (r->have_forward = forward_create(&r->fwd));
     if (!ensure_gbuffer(r, gs))
@@ -222,16 +249,52 @@ static bool draw_stencil(renderer_stencil *st, const gpu_scene *gs, GLuint targe
     return gl_check("renderers: deferred-stencil");
 }
 
+/* chapters/11_clustered.c's two frames, with its pass states: Forward+ (pre-pass, then GL_EQUAL) or
+ * clustered deferred (G-buffer, then one full-screen pass). */
+static bool draw_clustered(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint target,
+                           renderer_draw_options o, renderer_result *res)
+{
+    static const gl_pass_state prepass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
+    static const gl_pass_state equal = {.cull = GL_BACK, .depth_func = GL_EQUAL};
+    static const gl_pass_state fullscreen = {0};
+    clusters *c = &r->clusters;
+    bool deferred = id == RENDERER_DEFERRED_CLUSTERED;
+    clusters_view view = o.linear_output ? CLUSTERS_VIEW_LINEAR : CLUSTERS_VIEW_LIT;
+    bool ok;
+    if (deferred) {
+        ok = gbuffer_render(&r->g, gs) && clusters_assign(c, gs);
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        glViewport(0, 0, gs->view.width, gs->view.height);
+        ok = ok && clusters_shade_deferred(c, &r->g, gs, &fullscreen, view);
+    } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        glViewport(0, 0, gs->view.width, gs->view.height);
+        gl_pass_state_apply(&prepass);
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        ok = clusters_draw_depth(c, gs) && clusters_assign(c, gs) && clusters_shade_forward(c, gs, &equal, view);
+    }
+    gl_pass_state_reset();
+    ok = ok && (!o.count_pixels || clusters_count(c, deferred ? &r->g : NULL, gs));
+    res->shaded = o.count_pixels && ok ? c->covered : -1;
+    res->lights_per_pixel = o.count_pixels && ok && c->covered > 0 ? (double)c->evaluations / (double)c->covered : 0.0;
+    return ok;
+}
+
 bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint target,
                     renderer_draw_options o, renderer_result *result)
 {
     renderer_result res = {-1, 1.0};
     bool ok = ensure(r, id, gs);
-    if (ok && renderer_table[id].forward) {
+    if (ok && (id == RENDERER_FORWARD_PLUS || id == RENDERER_DEFERRED_CLUSTERED)) {
+        ok = draw_clustered(r, id, gs, target, o, &res);
+    } else if (ok && renderer_table[id].forward) {
         ok = draw_forward(r, id, gs, target, o, &res);
     } else if (ok && id == RENDERER_DEFERRED_STENCIL) {
         ok = draw_stencil(&r->stencil, gs, target, o.count_pixels, &res.shaded);
         r->accum = &r->stencil.dv.accum;
+    } else if (ok && id == RENDERER_DEFERRED_TILED) {
+        ok = draw_tiled(&r->tiled, gs, target, o.count_pixels, &res.shaded);
     } else if (ok && id == RENDERER_DEFERRED_FULLSCREEN) {
         const deferred_fullscreen_options fo = {.count_pixels = o.count_pixels};
         ok = gbuffer_render(&r->g, gs) && deferred_fullscreen_render(&r->fullscreen, &r->g, gs, target, fo);
@@ -256,3 +319,15 @@ bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint
 }
 
 const fbo *renderers_accum(const renderer_set *r) { return r->accum ? r->accum : &r->volumes.accum; }
+
+bool renderer_have_compute(void)
+{
+    const char *hide = getenv("COURSE_NO_COMPUTE");
+    return GLAD_GL_VERSION_4_3 && !(hide && *hide && strcmp(hide, "0") != 0);
+}
+
+/* ---- compute programs (GL 4.3). gl_program_load's preprocessor is file-local to gl_util.c and
+ * makes vertex + fragment programs only: this is the same for one compute stage, until gl_util.c
+ * has a gl_compute_program_load. */
+
+#define GLSL_MAX_FILES 8

@@ -55,6 +55,9 @@ typedef struct scene_material {
     vec3 albedo;
     float specular;  /* default 0 */
     float shininess; /* default 32 */
+    float opacity;   /* default 1 (opaque); 0 < opacity <= 1, below 1 the object is glass: blended
+                        over what lies behind it, final = A * shaded + (1 - A) * behind, in linear
+                        radiance (docs/scene-format.md, docs/12_transparency.md) */
 } scene_material;
 
 typedef struct scene_object {

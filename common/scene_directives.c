@@ -114,25 +114,33 @@ static name_list material_list(const parser *p)
     return (name_list){p->s.materials ? p->s.materials[0].name : NULL, sizeof(scene_material)};
 }
 
-enum { MATERIAL_SPECULAR, MATERIAL_SHININESS };
-static const char *const MATERIAL_ATTRIBUTES[] = {"specular", "shininess", NULL};
+enum { MATERIAL_SPECULAR, MATERIAL_SHININESS, MATERIAL_OPACITY };
+static const char *const MATERIAL_ATTRIBUTES[] = {"specular", "shininess", "opacity", NULL};
 
 static bool take_material_attribute(parser *p, scene_material *m, unsigned *seen)
 {
-    int attribute =
-        scene_parser_take_attribute(p, "material", MATERIAL_ATTRIBUTES, "specular or shininess", seen);
+    int attribute = scene_parser_take_attribute(p, "material", MATERIAL_ATTRIBUTES,
+                                                "specular, shininess or opacity", seen);
     switch (attribute) {
     case MATERIAL_SPECULAR:
         return scene_parser_take_number(p, "material specular", NUMBER_NON_NEGATIVE, &m->specular);
     case MATERIAL_SHININESS:
         return scene_parser_take_number(p, "material shininess", NUMBER_POSITIVE, &m->shininess);
+    case MATERIAL_OPACITY:
+        /* 0 < A <= 1: an opacity of 0 would be an object nobody can see, drawn at full cost. */
+        if (!scene_parser_take_number(p, "material opacity", NUMBER_POSITIVE, &m->opacity))
+            return false;
+        if (!(m->opacity <= 1.0f))
+            return scene_parser_fail(p, "material opacity: must be at most 1 (1 is opaque), got '%s'",
+                                     scene_parser_show_token(p->tok[p->pos - 1]).text);
+        return true;
     default: return false; /* already reported */
     }
 }
 
 static bool parse_material(parser *p)
 {
-    scene_material m = {.specular = 0.0f, .shininess = 32.0f};
+    scene_material m = {.specular = 0.0f, .shininess = 32.0f, .opacity = 1.0f};
     if (!scene_parser_take_name(p, "material", m.name))
         return false;
     const name_slot *dup = scene_parser_find_name(&p->material_names, material_list(p), m.name);

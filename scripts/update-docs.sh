@@ -61,6 +61,7 @@ chapter_table() {
     case $(basename "$bin") in
       00_*) renderers=(forward forward-naive forward-prepass forward-lists) ;;
       01_*) renderers=(offscreen forward) ;;
+      11_*) renderers=(deferred forward-plus forward) ;;
     esac
     for r in "${renderers[@]}"; do
       run "$(basename "$bin")" --renderer "$r" "$@"
@@ -101,6 +102,31 @@ chapter_table() {
   run 07_face_culling --size 800x800 --scene assets/scenes/city.scene
   run 07_face_culling --size 800x800 --scene assets/scenes/city.scene --renderer forward
   echo
+  # The many-light chapters on the scenes their pages discuss, one renderer per row.
+  many_light() { # TITLE ARGS...: 07 and every later deferred chapter, then forward and Forward+
+    header "$1"
+    for bin in 07_face_culling 08_stencil_volumes 09_spot_lights 10_tiled_deferred 11_clustered; do
+      [ -x "build/bin/$bin" ] && run "$bin" "${@:2}"
+    done
+    [ -x build/bin/11_clustered ] && run 11_clustered --renderer forward-plus "${@:2}"
+    run 00_forward "${@:2}"
+    echo
+  }
+  many_light "many-lights-city-800x800" --size 800x800 --scene assets/scenes/city.scene
+  many_light "many-lights-default-1024-800x800" --size 800x800 --lights 1024
+  many_light "many-lights-city-1024-800x800" --size 800x800 --scene assets/scenes/city.scene --lights 1024
+  for volume in cone sphere; do
+    header "09-spots-$volume-800x600"
+    run 09_spot_lights --size 800x600 --scene assets/scenes/spots.scene --spot-volume "$volume"
+    echo
+  done
+  header "09-spots-forward-800x600"; run 00_forward --size 800x600 --scene assets/scenes/spots.scene; echo
+  for view in lit opaque; do
+    header "12-glass-$view-800x600"
+    run 12_transparency --size 800x600 --scene assets/scenes/glass.scene --view "$view"
+    echo
+  done
+  header "12-glass-forward-800x600"; run 00_forward --size 800x600 --scene assets/scenes/glass.scene; echo
 } >"$data/chapters.md.tmp"
 mv "$data/chapters.md.tmp" "$data/chapters.md"
 echo "wrote $data/chapters.md"

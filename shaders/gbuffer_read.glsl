@@ -1,13 +1,15 @@
-// gbuffer_read.glsl - decodes one G-buffer pixel (layout in common/gbuffer.h).
+// gbuffer_read.glsl - decodes one G-buffer pixel, whatever its layout (common/gbuffer.h).
 // The uniforms are set by gbuffer_bind_textures(); include after "shading.glsl" or alone.
 #ifndef GBUFFER_READ_GLSL
 #define GBUFFER_READ_GLSL
 #include "octahedral.glsl"
 
-uniform sampler2D u_gbuffer_albedo; // SRGB8_ALPHA8: texelFetch returns linear albedo
-uniform sampler2D u_gbuffer_normal; // RGBA16F: octahedral normal xy, specular, shininess
-uniform sampler2D u_gbuffer_depth;  // DEPTH_COMPONENT32F, window-space depth in [0,1]
-uniform mat4 u_inv_view_proj;
+uniform sampler2D u_gbuffer_albedo; // SRGB8_ALPHA8 (texelFetch returns linear albedo) or RGBA8
+uniform sampler2D u_gbuffer_normal; // the normal, and the material where RT0 has no room for it
+uniform sampler2D u_gbuffer_depth;  // window-space depth in [0,1]
+uniform int u_gbuffer_normal_encoding; // SHADER_GBUFFER_NORMAL_*: how RT1 holds the normal
+uniform bool u_gbuffer_reversed_z;     // near 1, far 0 (glClipControl: NDC z = window depth)
+uniform mat4 u_inv_view_proj;       // of the projection the depth was written with
 uniform vec3 u_eye;
 uniform vec2 u_viewport_size;       // G-buffer size in pixels
 
@@ -17,16 +19,37 @@ struct surface {
     vec3 albedo;   // linear
     float specular;
     float shininess;
-    bool background; // nothing was drawn here (depth == 1)
+    bool background; // nothing was drawn here (depth is the clear value: 1, or 0 reversed)
 };
 
 // World position of the pixel's centre at window depth `depth`: undo the viewport transform to
-// NDC, then the projection and the view with one matrix, then the perspective divide.
+// NDC, then the projection and the view with one matrix, then the perspective divide. Reversed-Z
+// uses glClipControl's [0,1] depth range, so there NDC z is the window depth itself.
 vec3 gbuffer_position(ivec2 pixel, float depth)
 {
     vec2 ndc = (vec2(pixel) + 0.5) / u_viewport_size * 2.0 - 1.0;
-    vec4 world = u_inv_view_proj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+    float z = u_gbuffer_reversed_z ? depth : depth * 2.0 - 1.0;
+    vec4 world = u_inv_view_proj * vec4(ndc, z, 1.0);
     return world.xyz / world.w;
+}
+
+bool gbuffer_is_background(float depth)
+{
+    return u_gbuffer_reversed_z ? depth <= 0.0 : depth >= 1.0;
+}
+
+// A fixed-point channel back to its integer code (texelFetch returns code / (2^bits - 1)).
+vec2 gbuffer_codes(vec2 c, float scale)
+{
+    return floor(c * scale + 0.5);
+}
+
+// Three bytes back to two 12-bit codes (gbuffer.frag's pack_12_12).
+vec2 gbuffer_unpack_12_12(vec3 c)
+{
+    vec3 b = floor(c * 255.0 + 0.5);
+    float x_lo = floor(b.y / 16.0);
+    return vec2(b.x * 16.0 + x_lo, (b.y - x_lo * 16.0) * 256.0 + b.z);
 }
 
 // The surface at a pixel whose depth the caller has already read (and its position computed).
@@ -34,12 +57,24 @@ surface gbuffer_read_at(ivec2 pixel, float depth, vec3 position)
 {
     surface s;
     vec4 nm = texelFetch(u_gbuffer_normal, pixel, 0);
-    s.background = depth >= 1.0;
+    vec4 albedo = texelFetch(u_gbuffer_albedo, pixel, 0);
+    s.background = gbuffer_is_background(depth);
     s.position = position;
-    s.normal = octahedral_decode(nm.xy);
-    s.albedo = texelFetch(u_gbuffer_albedo, pixel, 0).rgb;
-    s.specular = nm.z;
-    s.shininess = nm.w;
+    s.albedo = albedo.rgb;
+    if (u_gbuffer_normal_encoding == SHADER_GBUFFER_NORMAL_HALF) {
+        s.normal = octahedral_decode(nm.xy);
+        s.specular = nm.z;
+        s.shininess = nm.w;
+        return s;
+    }
+    if (u_gbuffer_normal_encoding == SHADER_GBUFFER_NORMAL_BYTES)
+        s.normal = octahedral_decode_codes(gbuffer_codes(nm.xy, 255.0), 127.0);
+    else if (u_gbuffer_normal_encoding == SHADER_GBUFFER_NORMAL_PACKED)
+        s.normal = octahedral_decode_codes(gbuffer_unpack_12_12(nm.xyz), 2047.0);
+    else
+        s.normal = octahedral_decode_codes(gbuffer_codes(nm.xy, 65535.0), 32767.0);
+    s.specular = albedo.a;
+    s.shininess = 1.0 + 255.0 * nm.w; // gbuffer.frag's shininess_store
     return s;
 }
 

@@ -62,4 +62,31 @@ vec2 octahedral_encode_half(vec3 n)
     return best;
 }
 
+// For a fixed-point target of n bits per number (RGBA8: n = 8, RGBA16: n = 16, or 12 bits packed
+// over three bytes): the number e in [-1,1] is the integer code q in [0, 2m] as e = (q - m) / m,
+// m = 2^(n-1) - 1. One code of the 2^n is left unused so that 0 (and +-1) are codes exactly, as in
+// a snorm format: the axes, the floor's (0, 1, 0) among them, are stored without error. Of the four
+// code pairs around the exact encoding, the one whose decoded direction is closest to n, as above.
+vec2 octahedral_encode_codes(vec3 n, float m)
+{
+    vec2 lo = floor(octahedral_encode(n) * m + m); // codes are integers: exact in float up to 2^24
+    vec2 best = lo;
+    float best_d2 = 1e30;
+    for (int i = 0; i < 4; i++) {
+        vec2 q = clamp(lo + vec2(i & 1, i >> 1), 0.0, 2.0 * m);
+        vec3 d = octahedral_decode((q - m) / m) - n;
+        float d2 = dot(d, d);
+        if (d2 < best_d2) {
+            best_d2 = d2;
+            best = q;
+        }
+    }
+    return best;
+}
+
+vec3 octahedral_decode_codes(vec2 q, float m)
+{
+    return octahedral_decode((q - m) / m);
+}
+
 #endif

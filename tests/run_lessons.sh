@@ -31,7 +31,21 @@ expect_first "light_batches_make" 08_stencil_volumes.c
 expect_first "CONE_VOLUME" 09_spot_lights.c
 expect_first "light_volumes_cone_create" 09_spot_lights.c
 expect_first "gpu_light_is_spot" 09_spot_lights.c
+expect_first "glDispatchCompute" 10_tiled_deferred.c
+expect_first "glMemoryBarrier" 10_tiled_deferred.c
+expect_first "glBindBufferBase(GL_SHADER_STORAGE_BUFFER" 10_tiled_deferred.c
+expect_first "tiled_cull.comp" 10_tiled_deferred.c
+expect_first "tile_depth_bounds.frag" 10_tiled_deferred.c
+expect_first "tiled_shade.frag" 10_tiled_deferred.c
+expect_first "renderer_tile_sphere_visible" 10_tiled_deferred.c
+expect_first "clusters_assign" 11_clustered.c
+expect_first "clusters_shade_deferred" 11_clustered.c
+expect_first "clusters_shade_forward" 11_clustered.c
+expect_first "GL_EQUAL" 00_forward.c
 expect_first "forward_draw_depth" 00_forward.c
+expect_first "GL_ONE_MINUS_SRC_ALPHA" 12_transparency.c
+expect_first "forward_draw_transparent" 12_transparency.c
+expect_first "GPU_SCENE_BACK_TO_FRONT" 12_transparency.c
 expect_first "glCheckFramebufferStatus" 01_fbo_setup.c
 # No lesson behind a flag in common/: the old option structs are gone.
 if grep -n "light_volumes_options\|overwrite\b" "$root"/common/*.[ch]; then

@@ -15,7 +15,9 @@
  *   bench_renderers  the renderers compared    bench_measure  reference, work, error, read-backs
  *   bench_state      options, machine, rows    bench_work     the CPU side of work and error
  *   bench_report     bench.csv and bench.md    bench_plots    the gnuplot script and plots
+ *   bench_gbuffer    the G-buffer layouts: bytes, time and precision (--gbuffer-sweep)
  */
+#include "bench/bench_gbuffer.h"
 #include "bench/bench_measure.h"
 #include "bench/bench_options.h"
 #include "bench/bench_plots.h"
@@ -36,7 +38,8 @@
 static bool write_outputs(const bench_state *st)
 {
     return bench_report_write_csv(st) && bench_report_write_md(st) &&
-           (!st->opt.plots || bench_plots_make(st));
+           (!bench_gbuffer_enabled() || bench_gbuffer_write_csv(st)) &&
+           (!st->opt.plots || bench_gbuffer_only() || bench_plots_make(st));
 }
 
 int main(int argc, char **argv)
@@ -67,7 +70,9 @@ int main(int argc, char **argv)
     bench_measure m;
     bench_renderers *br = NULL;
     bool ok = bench_measure_create(o->width, o->height, &m) &&
-              bench_renderers_create(o->width, o->height, &br) && bench_run_all(&st, br, &m);
+              bench_renderers_create(o->width, o->height, &br) &&
+              (bench_gbuffer_only() || bench_run_all(&st, br, &m)) &&
+              (!bench_gbuffer_enabled() || bench_gbuffer_run(&st, br, &m));
     rc = ok ? EXIT_CODE_OK : EXIT_CODE_RUNTIME;
     if (ok)
         fprintf(stderr, "bench: %d cases in %.1f s\n", st.case_index, (bench_measure_now_ms() - t0) / 1000.0);

@@ -585,6 +585,56 @@ static void test_spot_errors(void **state)
         check_error(cases[i].text, cases[i].want);
 }
 
+/* ---- opacity ---------------------------------------------------------------------------------- */
+
+/* A material's opacity: 1 when not given, any value in (0, 1] when given, in any attribute order. */
+static void test_opacity(void **state)
+{
+    (void)state;
+    const char *text = "material stone albedo 0.5 0.5 0.5\n"
+                       "material glass albedo 0.2 0.4 0.9 opacity 0.35 specular 1 shininess 128\n"
+                       "material tint albedo 1 0 0 opacity 1e-6\n"
+                       "material solid albedo 1 1 1 shininess 8 opacity 1\n";
+    scene s;
+    parse_ok(text, &s);
+    assert_int_equal(s.material_count, 4);
+    assert_float_equal(s.materials[0].opacity, 1.0f, 0.0f);
+    assert_float_equal(s.materials[1].opacity, 0.35f, EPS);
+    assert_material(&s.materials[1], "glass", (const float[3]){0.2f, 0.4f, 0.9f}, 1.0f, 128.0f);
+    assert_float_equal(s.materials[2].opacity, 1e-6f, 1e-12f);
+    assert_float_equal(s.materials[3].opacity, 1.0f, 0.0f);
+    assert_float_equal(s.materials[3].shininess, 8.0f, EPS);
+    scene_destroy(&s);
+}
+
+static void test_opacity_errors(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *text;
+        const char *want;
+    } cases[] = {
+        {"material m albedo 1 1 1 opacity 0\n", "t.scene:1: material opacity: must be > 0, got '0'"},
+        {"material m albedo 1 1 1 opacity -0.5\n", "t.scene:1: material opacity: must be > 0, got '-0.5'"},
+        {"\nmaterial m albedo 1 1 1 opacity 1.5\n",
+         "t.scene:2: material opacity: must be at most 1 (1 is opaque), got '1.5'"},
+        {"material m albedo 1 1 1 opacity 1.0000001\n", "t.scene:1: material opacity: must be at most 1"},
+        {"material m albedo 1 1 1 opacity\n", "t.scene:1: material opacity: missing number"},
+        {"material m albedo 1 1 1 opacity half\n",
+         "t.scene:1: material opacity: expected a number, got 'half'"},
+        {"material m albedo 1 1 1 opacity nan\n",
+         "t.scene:1: material opacity: not a finite number, got 'nan'"},
+        {"material m albedo 1 1 1 opacity 0.5 0.5\n", "t.scene:1: material: unexpected extra token '0.5'"},
+        {"material m albedo 1 1 1 opacity 0.5 opacity 0.2\n", "t.scene:1: material: 'opacity' given twice"},
+        {"material m albedo 1 1 1 alpha 0.5\n",
+         "t.scene:1: material: unknown attribute 'alpha' (expected specular, shininess or opacity)"},
+        {"mesh a cube\nmaterial m albedo 1 1 1\nobject a m opacity 0.5\n",
+         "t.scene:3: object: unknown attribute 'opacity'"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
+        check_error(cases[i].text, cases[i].want);
+}
+
 static void test_error_long_line(void **state)
 {
     (void)state;
@@ -735,5 +785,6 @@ UNIT_TEST_MAIN(setup_dir, tmp_dir_remove, cmocka_unit_test(test_defaults),
                cmocka_unit_test(test_keys), cmocka_unit_test(test_world_matrix),
                cmocka_unit_test(test_add_light), cmocka_unit_test(test_errors),
                cmocka_unit_test(test_spot), cmocka_unit_test(test_spot_errors),
+               cmocka_unit_test(test_opacity), cmocka_unit_test(test_opacity_errors),
                cmocka_unit_test(test_error_long_line), cmocka_unit_test(test_error_from_file),
                cmocka_unit_test(test_model_paths), cmocka_unit_test(test_large_scene))

@@ -2,6 +2,7 @@
 #include "data_dir.h"
 #include "bench_options.h"
 
+#include "bench_gbuffer.h"
 #include "bench_renderers.h"
 
 #include <errno.h>
@@ -9,7 +10,8 @@
 #include <string.h>
 
 static const char *const default_renderers =
-    "forward-naive,forward,deferred-fullscreen,deferred-volumes,deferred-volumes-windowed,deferred-stencil";
+    "forward-naive,forward,deferred-fullscreen,deferred-volumes,deferred-volumes-windowed,deferred-stencil,"
+    "deferred-tiled";
 
 void bench_options_print_help(FILE *f)
 {
@@ -25,11 +27,13 @@ void bench_options_print_help(FILE *f)
         "                        (default default,city,bunnies,sphere,teapots)\n"
         "  --renderers LIST      of: forward-naive forward forward-prepass forward-lists\n"
         "                        deferred-fullscreen deferred-volumes deferred-volumes-windowed\n"
-        "                        deferred-stencil\n"
+        "                        deferred-stencil deferred-tiled\n"
         "                        (default: forward-naive, forward, deferred-fullscreen, deferred-volumes,\n"
         "                        deferred-volumes-windowed: chapter 07 with the windowed falloff, whose\n"
         "                        error against the exact hard-falloff picture is the model's price,\n"
-        "                        deferred-stencil: chapter 08's stencil light volumes)\n"
+        "                        deferred-stencil: chapter 08's stencil light volumes, deferred-tiled:\n"
+        "                        chapter 10's per-tile light lists, whose shaded_pixels are light-loop\n"
+        "                        iterations)\n"
         "  --cutoffs LIST        cut-off sweep in 1/256 units (default 0.5,1,2,5,10,20,32)\n"
         "  --cutoff-scene NAME   scene of the cut-off sweep (default: the first of --scenes)\n"
         "  --cutoff-lights N     light count of the cut-off sweep (default 256)\n"
@@ -50,9 +54,10 @@ void bench_options_print_help(FILE *f)
         "  --backend egl|osmesa  headless GL (default egl)\n"
         "  --no-plots            skip gnuplot\n"
         "  --quick               small sweep for tests: 160x160, default scene, 1,16,64 lights,\n"
-        "                        3 frames, cut-offs 2,5,16 at 16 lights\n"
-        "  --help                this text\n\n"
-        "exit codes: 0 ok, 1 runtime failure, 2 usage error, 77 no GL context\n");
+        "                        3 frames, cut-offs 2,5,16 at 16 lights\n");
+    bench_gbuffer_print_help(f);
+    fprintf(f, "  --help                this text\n\n"
+               "exit codes: 0 ok, 1 runtime failure, 2 usage error, 77 no GL context\n");
 }
 
 static bool usage_error(const char *what, const char *value)
@@ -197,6 +202,7 @@ static void set_defaults(bench_options *o)
     o->out_dir = "out";
     o->plots = true;
     o->backend = BACKEND_EGL;
+    bench_gbuffer_reset(false);
 }
 
 static void set_quick(bench_options *o)
@@ -209,6 +215,7 @@ static void set_quick(bench_options *o)
     o->width = o->height = 160;
     o->frames = 3, o->warmup = 1;
     o->case_budget_ms = 1000;
+    bench_gbuffer_reset(true);
 }
 
 /* What one option with a value made of its value; OPTION_UNKNOWN lets the next group try it. */
@@ -318,6 +325,13 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
             continue;
         if (strcmp(a, "--no-plots") == 0) {
             o->plots = false;
+            continue;
+        }
+        int gbuffer = bench_gbuffer_parse_option(a, v);
+        if (gbuffer != 0) {
+            if (gbuffer < 0)
+                return EXIT_CODE_USAGE;
+            i++; /* the value */
             continue;
         }
         option_result res = parse_sweep_option(o, a, v, &have_cutoff_scene);

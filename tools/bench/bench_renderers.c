@@ -29,6 +29,8 @@ bool bench_renderer_uses_volumes(int r) { return r == RENDERER_DEFERRED_VOLUMES;
 
 bool bench_renderer_uses_stencil(int r) { return r == RENDERER_DEFERRED_STENCIL; }
 
+bool bench_renderer_uses_tiles(int r) { return r == RENDERER_DEFERRED_TILED; }
+
 /* The naive forward loop ignores the cut-off's main effect (it loops over every light anyway). */
 bool bench_renderer_in_cutoff_sweep(int r) { return r != RENDERER_FORWARD_NAIVE; }
 
@@ -113,7 +115,7 @@ bool bench_render_frame(bench_renderers *br, int r, const gpu_scene *gs, bool co
 bool bench_read_linear(bench_renderers *br, int r, const gpu_scene *gs, float *rgba)
 {
     const fbo *src = &br->linear_target;
-    if (r == RENDERER_DEFERRED_FULLSCREEN)
+    if (r == RENDERER_DEFERRED_FULLSCREEN || r == RENDERER_DEFERRED_TILED)
         return false; /* display-encodes in its only shader */
     if (r == RENDERER_DEFERRED_VOLUMES || r == RENDERER_DEFERRED_VOLUMES_WINDOWED ||
         r == RENDERER_DEFERRED_STENCIL)

@@ -8,6 +8,8 @@
  *   bench_renderer_is_deferred(r)          lights from a G-buffer (the report's forward/deferred split)
  *   bench_renderer_uses_volumes(r)         one light volume per light (the report's targets)
  *   bench_renderer_uses_stencil(r)         stencil light volumes (their own work target, chapter 08)
+ *   bench_renderer_uses_tiles(r)           tiled light lists (their own work target, chapter 10: the
+ *                                          light-loop iterations, counted as shaded pixels)
  *   bench_renderer_in_cutoff_sweep(r)      whether the cut-off sweep measures r
  *   bench_renderer_reference()             the renderer of the exact reference picture
  *   bench_renderer_depth_source()          the cheapest renderer whose depth is the exact visible surface
@@ -50,6 +52,7 @@ int bench_renderer_find(const char *name);
 bool bench_renderer_is_deferred(int r);
 bool bench_renderer_uses_volumes(int r);
 bool bench_renderer_uses_stencil(int r);
+bool bench_renderer_uses_tiles(int r);
 bool bench_renderer_in_cutoff_sweep(int r);
 int bench_renderer_reference(void);
 int bench_renderer_depth_source(void);

@@ -1,7 +1,10 @@
 /* bench_report.c - see bench_report.h. */
 #include "bench_report.h"
 
+#include "bench_gbuffer.h"
 #include "bench_renderers.h"
+
+#include "gbuffer.h"
 
 #include "log.h"
 
@@ -134,6 +137,14 @@ static int stencil_renderer_selected(const bench_state *st)
     return -1;
 }
 
+static int tiled_renderer_selected(const bench_state *st)
+{
+    for (int i = 0; i < st->opt.renderer_count; i++)
+        if (bench_renderer_uses_tiles(st->opt.renderers[i]))
+            return st->opt.renderers[i];
+    return -1;
+}
+
 /* Shaded pixels / ideal pairs of renderer `r` on the default scene and the city, at 1024 generated
  * lights and at the city's own: one row each, met when at most `bound`. */
 static void write_work_targets(FILE *f, const bench_state *st, int renderer, double bound, const char *what,
@@ -210,6 +221,8 @@ static void write_targets(FILE *f, const bench_state *st)
     /* 2. work ratio <= 1.5 on default and city (chapter 07); <= 1.1 with the stencil (chapter 08) */
     write_work_targets(f, st, vol, 1.5, "light volumes", &rows);
     write_work_targets(f, st, stencil_renderer_selected(st), 1.1, "stencil light volumes", &rows);
+    /* chapter 10: light-loop iterations <= 3x the ideal pairs */
+    write_work_targets(f, st, tiled_renderer_selected(st), 3.0, "tiled light lists", &rows);
     /* 3. city at its own 757 lights >= 10 fps */
     const bench_row *city = vol >= 0 ? bench_state_find_row(st, "lights", "city", vol, true, 0, -1) : NULL;
     if (city && rows++ == 0)
@@ -280,9 +293,10 @@ static void write_intro(FILE *f, const bench_state *st)
             "same shading model; errors only up to %d lights\n",
             o->error_max_lights);
     fprintf(f,
-            "- G-buffer: %d bytes per pixel (naive layout with world position: %d); the G-buffer has one "
-            "layout, so there is no precision option to sweep\n\n",
-            bench_renderer_gbuffer_bytes(), bench_renderer_gbuffer_naive_bytes());
+            "- G-buffer: %d bytes per pixel, layout %s (naive layout with world position: %d)%s\n\n",
+            bench_renderer_gbuffer_bytes(), gbuffer_default_layout()->name,
+            bench_renderer_gbuffer_naive_bytes(),
+            bench_gbuffer_enabled() ? "; the other layouts: \"G-buffer layouts\" below" : "");
 }
 
 static void write_times(FILE *f, const bench_state *st)
@@ -420,5 +434,7 @@ bool bench_report_write_md(const bench_state *st)
     write_light_table(f, st, false);
     write_light_table(f, st, true);
     write_cutoff(f, st);
+    if (bench_gbuffer_enabled())
+        bench_gbuffer_write_md(f, st);
     return bench_report_close_tmp(f, tmp, st->opt.out_dir, "bench.md");
 }

@@ -1,0 +1,81 @@
+/* clusters.h - chapter 11's clustered shading: per-cluster light lists made on the CPU, and the two
+ * renderers that read them, clustered deferred and clustered forward (Forward+).
+ *
+ *   clusters_create(c, desc)          nothing drawn yet: buffers; the programs are built on first use
+ *   clusters_destroy(c)
+ *   clusters_assign(c, gs)            the grid for gs's view (cluster_grid.h), every light's bounding
+ *                                     sphere in view space, their lists, uploaded as two texture
+ *                                     buffers (ranges RG32I, indices R32I)
+ *   clusters_bind(c, program, first_unit)
+ *                                     u_cluster_ranges and u_cluster_lights on first_unit and
+ *                                     first_unit + 1, and the grid uniforms of shaders/clusters.glsl
+ *   clusters_draw_depth(c, gs)        Forward+'s depth pre-pass: every opaque object, depth only,
+ *                                     with the caller's depth state (forward.vert + depth_only.frag)
+ *   clusters_shade_forward(c, gs, pass, view)
+ *                                     Forward+'s shading: every opaque object with forward_plus.frag
+ *                                     and the state `pass` (after the pre-pass: GL_EQUAL), into the
+ *                                     framebuffer bound
+ *   clusters_shade_deferred(c, g, gs, pass, view)
+ *                                     the clustered deferred pass: one full-screen triangle reading
+ *                                     g once per pixel (clustered_deferred.frag), into the
+ *                                     framebuffer bound, with the state `pass`
+ *   clusters_count(c, g, gs)          the light-loop iterations of the last frame, exactly as the
+ *                                     shading pass ran them: the same shader in its count view into
+ *                                     a float target, read back and added up (g NULL: Forward+, which
+ *                                     draws its own pre-pass there). Sets c->evaluations and
+ *                                     c->covered (pixels with a surface); false on a GL error
+ *
+ * A view (clusters_view) is what the shading pass writes: the lit picture (display-encoded, or linear
+ * radiance for a float target), the loop's length per pixel as the heat map, or the clusters view
+ * (each pixel's cluster list length as the heat map, odd slices darker).
+ * Both renderers call the one shading function (shaders/shading.glsl) over the same lists: the
+ * difference between them is only where the surface comes from, the G-buffer or the rasteriser.
+ * Transparent objects are not drawn (chapter 12's glass is forward's alone).
+ */
+#ifndef COMMON_CLUSTERS_H
+#define COMMON_CLUSTERS_H
+
+#include "cluster_grid.h"
+#include "fbo.h"
+#include "gbuffer.h"
+#include "gpu_scene.h"
+
+typedef enum clusters_view {
+    CLUSTERS_VIEW_LIT,      /* the picture, display-encoded */
+    CLUSTERS_VIEW_LINEAR,   /* the picture in linear radiance (a float target) */
+    CLUSTERS_VIEW_OVERDRAW, /* the light-loop iterations of each pixel as the heat map */
+    CLUSTERS_VIEW_CLUSTERS, /* each pixel's cluster list length, slices in alternating shades */
+} clusters_view;
+
+typedef struct clusters_desc {
+    int tile_size;     /* pixels; 0: CLUSTERS_TILE_SIZE */
+    int slices;        /* 0: cubic clusters (cluster_grid_cubic_slices) */
+    int cluster_limit; /* most entries a cluster's list holds (more: every light); 0: no limit */
+} clusters_desc;
+
+#define CLUSTERS_TILE_SIZE 32
+
+typedef struct clusters {
+    clusters_desc desc;
+    cluster_grid grid;
+    cluster_lists lists;
+    float (*spheres)[4]; /* per light, its bounding sphere in view space */
+    int sphere_cap;
+    GLuint range_buffer, range_texture, list_buffer, list_texture;
+    GLuint depth_program, forward_program, deferred_program;
+    fbo count_target; /* RGBA32F + depth: the count view */
+    float *count_pixels;
+    long evaluations, covered;
+} clusters;
+
+bool clusters_create(clusters *c, const clusters_desc *desc);
+void clusters_destroy(clusters *c);
+bool clusters_assign(clusters *c, const gpu_scene *gs);
+void clusters_bind(const clusters *c, GLuint program, int first_unit);
+bool clusters_draw_depth(clusters *c, const gpu_scene *gs);
+bool clusters_shade_forward(clusters *c, const gpu_scene *gs, const gl_pass_state *pass, clusters_view view);
+bool clusters_shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *gs, const gl_pass_state *pass,
+                             clusters_view view);
+bool clusters_count(clusters *c, const gbuffer *g, const gpu_scene *gs);
+
+#endif

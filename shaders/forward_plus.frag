@@ -1,0 +1,32 @@
+#version 330 core
+// forward_plus.frag - chapter 11's clustered forward shading (Forward+): forward.frag's inputs, but
+// each fragment loops over the lights of its cluster (clusters.glsl) instead of its object's list.
+// Drawn after a depth pre-pass with GL_EQUAL, so each pixel runs the loop once.
+#include "shading.glsl"
+#include "heat.glsl"
+#include "clusters.glsl"
+
+in vec3 v_world;
+in vec3 v_normal;
+flat in vec3 v_albedo;
+flat in float v_specular;
+flat in float v_shininess;
+
+uniform vec3 u_eye;
+uniform int u_view_mode;      // SHADER_VIEW_LIT, SHADER_VIEW_OVERDRAW, VIEW_CLUSTERS, VIEW_COUNT
+uniform bool u_output_linear; // linear radiance for a float target (the benchmark)
+
+out vec4 o_color;
+
+void main()
+{
+    float depth = cluster_view_depth(v_world);
+    ivec2 range = cluster_range(cluster_index(gl_FragCoord.xy, depth));
+    vec3 c = vec3(0.0);
+    if (u_view_mode == SHADER_VIEW_LIT) {
+        vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
+        vec3 v = safe_normalize(u_eye - v_world, n);
+        c = cluster_shade(range, v_world, n, v, v_albedo, v_specular, v_shininess);
+    }
+    o_color = cluster_output(u_view_mode, u_output_linear, range, depth, c);
+}

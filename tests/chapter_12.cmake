@@ -1,0 +1,122 @@
+# Chapter 12 (transparency: glass shaded forward, back to front, over the deferred frame): the
+# pictures its page shows, the claim "this matches forward" with glass and without, that the order
+# matters, that the glass stays out of the G-buffer, and the hard cases (docs/12_transparency.md).
+#
+# Agreement bound: 1/255 on 99.99 % of pixels, as for chapter 07 (the same G-buffer, RGBA16F sum and
+# volume state; the glass is the same program, the same draws in the same order, blended in linear
+# radiance on both sides: into the RGBA16F sum here, into forward's RGBA32F frame there). Measured on
+# the glass scene at 320x240 and 640x480: max 1, on no pixel beyond it.
+
+# debug_views.cmake's count test (that file is included after this one): the heat map read back.
+function(chapter_12_count_test name claim)
+  add_test(NAME overdraw.${name}
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_overdraw_count.sh $<TARGET_FILE:heat_count>
+            ${COURSE_TEST_OUT}/overdraw_${name}.png ${claim} -- ${ARGN}
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(overdraw.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+endfunction()
+
+function(chapter_12_tests)
+  set(S ${CMAKE_SOURCE_DIR}/tests/scenes)
+  set(GLASS ${CMAKE_SOURCE_DIR}/assets/scenes/glass.scene)
+  set(C 12_transparency)
+  if(NOT TARGET ${C} OR NOT TARGET 00_forward)
+    return()
+  endif()
+
+  # The pictures the page shows: the glass scene lit, in the scene's order (the bug), its glass
+  # layers as a heat map, the opaque part alone; the camera inside a glass ball; panes at equal depths.
+  course_golden_test(12_transparency_glass ${C} 1 0.0001 --scene ${GLASS})
+  course_golden_test(12_transparency_glass_sort_none ${C} 1 0.0001 --scene ${GLASS} --sort none)
+  course_golden_test(12_transparency_glass_overdraw ${C} 1 0.0001 --scene ${GLASS} --view overdraw)
+  course_golden_test(12_transparency_glass_inside ${C} 1 0.0001 --scene ${S}/glass_inside.scene)
+  course_golden_test(12_transparency_glass_same_depth ${C} 1 0.0001 --scene ${S}/glass_same_depth.scene)
+
+  # The chapter's claim: chapter 00's picture, on the default scene (no glass: chapter 07's frame) and
+  # on the glass scene, moving, from the other side (the sort follows the eye), at other cut-offs, with
+  # the windowed falloff, with generated lights, at full size; and on the hard cases.
+  course_forward_agreement_test(12_vs_forward 1 0.0001 ${C})
+  foreach(case "glass|" "glass_time3|--time@3" "glass_behind|--camera@eye -4 3.5 -6 target 0.3 0.8 0"
+               "glass_cutoff0|--cutoff@0" "glass_cutoff0.1|--cutoff@0.1" "glass_windowed|--falloff@windowed"
+               "glass_800|--size@800x600")
+    string(REPLACE "|" ";" parts "${case}")
+    list(GET parts 0 name)
+    list(GET parts 1 args)
+    string(REPLACE "@" ";" args "${args}")
+    course_forward_agreement_test(12_vs_forward_${name} 1 0.0001 ${C} --scene ${GLASS} ${args})
+  endforeach()
+  # 64 generated lights: the opaque part's cut-off steps as in agree.07_vs_forward_lights64 (the same
+  # 3 pixels, max 9/255, none of them under glass), hence its bound of 0.02 %.
+  course_forward_agreement_test(12_vs_forward_glass_lights64 1 0.0002 ${C} --scene ${GLASS} --lights 64)
+  foreach(scene glass_inside glass_same_depth)
+    course_forward_agreement_test(12_vs_forward_${scene} 1 0.0001 ${C} --scene ${S}/${scene}.scene)
+  endforeach()
+  course_agreement_test(12_renderer_forward 0 0 ${C} --renderer forward --scene ${GLASS}
+    VS 00_forward --scene ${GLASS})
+
+  # The order matters: drawn in the scene's order (nearest first) the glass is not forward's picture.
+  course_agreement_test(12_sort_none_differs 1 0.0001 ${C} --scene ${GLASS} --sort none VS 00_forward --scene ${GLASS})
+  set_tests_properties(agree.12_sort_none_differs PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
+
+  # The glass is in no G-buffer: the glass scene is the default scene plus glass, and chapter 02's
+  # G-buffer views of both are the same bytes; chapter 07, which has no glass pass, draws the same
+  # frame for both; and chapter 12's opaque view is chapter 07's frame.
+  if(TARGET 02_mrt_gbuffer)
+    foreach(view depth albedo normal specular)
+      course_agreement_test(12_glass_not_in_gbuffer_${view} 0 0
+        02_mrt_gbuffer --scene ${GLASS} --view ${view} VS 02_mrt_gbuffer --view ${view})
+    endforeach()
+  endif()
+  if(TARGET 07_face_culling)
+    course_agreement_test(12_chapter_07_draws_no_glass 0 0 07_face_culling --scene ${GLASS} VS 07_face_culling)
+    course_agreement_test(12_opaque_view_is_07 0 0 ${C} --scene ${GLASS} --view opaque VS 07_face_culling)
+    course_agreement_test(12_default_is_07 0 0 ${C} VS 07_face_culling)
+  endif()
+
+  # Chapter 00's optimisations still change nothing with glass (the pre-pass leaves it out; the
+  # variants without a pre-pass write the opaque depth while shading), nor does chapter 01's
+  # framebuffer (its depth is a renderbuffer: forward copies it in and out).
+  foreach(variant forward-naive forward-prepass forward-lists)
+    course_agreement_test(00_${variant}_glass 1 0.0001
+      00_forward --renderer forward --scene ${GLASS} VS 00_forward --renderer ${variant} --scene ${GLASS})
+  endforeach()
+  if(TARGET 01_fbo_setup)
+    course_agreement_test(01_offscreen_glass 0 0 01_fbo_setup --scene ${GLASS} VS 00_forward --scene ${GLASS})
+  endif()
+
+  # The heat map counts exactly the glass pass's fragments (its GL_SAMPLES_PASSED, --bench's
+  # shaded_pixels), in the lit view too; and the check is not vacuous (another scene's count).
+  if(TARGET heat_count)
+    foreach(case "glass|--scene@${GLASS}" "inside|--scene@${S}/glass_inside.scene"
+                 "same_depth|--scene@${S}/glass_same_depth.scene")
+      string(REPLACE "|" ";" parts "${case}")
+      list(GET parts 0 name)
+      list(GET parts 1 args)
+      string(REPLACE "@" ";" args "${args}")
+      chapter_12_count_test(12_sum_${name} lit-run $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} ${args})
+    endforeach()
+    chapter_12_count_test(12_other_scene_differs lit-run
+      $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} --scene ${GLASS} -- --scene ${S}/glass_inside.scene)
+    set_tests_properties(overdraw.12_other_scene_differs PROPERTIES
+      PASS_REGULAR_EXPRESSION "\\(expected sum [0-9]+\\) -> FAIL")
+  endif()
+
+  # Resizes with glass: forward's float frame and chapter 12's buffers follow the size, leak nothing.
+  foreach(chapter ${C} 00_forward)
+    add_test(NAME robust.resize_cycle_glass.${chapter}
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_agreement.sh $<TARGET_FILE:imgdiff>
+              ${CMAKE_BINARY_DIR}/test-out resize_cycle_glass.${chapter} 1 0.0001
+              -- $<TARGET_FILE:${chapter}> --headless --size 128x96 --frames 1 --gl-debug --scene ${GLASS}
+                 --resize-cycle 50
+              -- $<TARGET_FILE:${chapter}> --headless --size 128x96 --frames 1 --gl-debug --scene ${GLASS}
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(robust.resize_cycle_glass.${chapter} PROPERTIES LABELS robust SKIP_RETURN_CODE 77
+      FAIL_REGULAR_EXPRESSION "still alive at exit")
+  endforeach()
+
+  add_test(NAME chapters.12_bad_sort COMMAND ${C} --headless --sort front-to-back
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.12_bad_sort PROPERTIES LABELS golden
+    PASS_REGULAR_EXPRESSION "unknown --sort value 'front-to-back' \\(one of: back-to-front none\\)")
+endfunction()
+chapter_12_tests()

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# run_bench_gbuffer.sh BENCH OUT_DIR - the benchmark's G-buffer sweep (tools/bench/bench_gbuffer.c)
+# at --quick's size: bench_gbuffer.csv has one row per (scene, layout), its numbers are finite or
+# NA, and what the layouts promise shows in them: the default is at most 12 bytes, the normal error
+# follows the bits (2x8 > 2x12 > 2x16, each within tests/unit/test_octahedral.c's bound), reversed-Z
+# rebuilds far positions more precisely than the standard float depth, and bench.md has the section.
+# Timings are never checked.
+set -u
+bench=$1
+out=$2
+rm -rf "$out"
+"$bench" --quick --gbuffer-sweep only --out "$out" >"$out.stdout" 2>"$out.stderr"
+rc=$?
+if [ "$rc" -eq 77 ]; then echo "skip: no GL context"; exit 77; fi
+if [ "$rc" -ne 0 ]; then echo "FAIL: bench --gbuffer-sweep only exited $rc"; cat "$out.stderr"; exit 1; fi
+grep -q "^## G-buffer layouts" "$out/bench.md" || { echo "FAIL: bench.md lacks '## G-buffer layouts'"; exit 1; }
+awk -F, '
+NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; ncol = NF; next }
+{
+    rows++
+    if (NF != ncol) { printf "FAIL: row %d has %d fields, header %d\n", NR, NF, ncol; bad = 1 }
+    for (i = col["frames"]; i < col["pass_clock"]; i++)
+        if ($i != "NA" && $i !~ /^-?[0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?$/) {
+            printf "FAIL: row %d column %d is \"%s\"\n", NR, i, $i; bad = 1
+        }
+    key = $col["scene"] "/" $col["layout"]
+    normal[key] = $col["normal_max_deg"]; far[key] = $col["far_max_error"]
+    if ($col["default"] == "yes") { defaults++; if ($col["bytes"] > 12) { print "FAIL: the default is " $col["bytes"] " bytes"; bad = 1 } }
+    if ($col["median_ms"] == "NA" || $col["median_ms"] <= 0) { printf "FAIL: row %d has no time\n", NR; bad = 1 }
+}
+END {
+    if (rows != 14) { printf "FAIL: %d rows, want 2 scenes x 7 layouts\n", rows; bad = 1 }
+    if (defaults != 2) { printf "FAIL: %d default rows, want 2\n", defaults; bad = 1 }
+    d = "default/"
+    if (!(normal[d "oct8"] > normal[d "compact"] && normal[d "compact"] > normal[d "oct16"])) {
+        print "FAIL: normal error does not follow the bits: " normal[d "oct8"] " " normal[d "compact"] " " normal[d "oct16"]; bad = 1
+    }
+    if (!(normal[d "oct8"] < 0.66 && normal[d "compact"] < 0.041 && normal[d "oct16"] < 0.0026 && normal[d "reference"] < 0.041)) {
+        print "FAIL: a normal error over its unit-test bound"; bad = 1
+    }
+    split("default city", names, " ")
+    for (k = 1; k <= 2; k++)
+        if (!(far[names[k] "/reversed-z"] < far[names[k] "/compact"])) {
+            print "FAIL: " names[k] ": reversed-z far error " far[names[k] "/reversed-z"] " not below compact " far[names[k] "/compact"]; bad = 1
+        }
+    if (!bad) printf "ok: %d rows\n", rows
+    exit bad
+}' "$out/bench_gbuffer.csv" || exit 1
+"$bench" --gbuffer-sweep sometimes >/dev/null 2>"$out.err"; rc=$?
+if [ "$rc" -ne 2 ] || [ "$(wc -l <"$out.err")" -ne 1 ]; then
+  echo "FAIL: a bad --gbuffer-sweep gave exit $rc and $(wc -l <"$out.err") line(s)"; exit 1
+fi
+echo "ok: the G-buffer sweep's output has the expected shape"

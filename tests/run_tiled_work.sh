@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# run_tiled_work.sh BENCH CHAPTER_10 OUT_DIR - chapter 10's claim about work, as numbers. The work of
+# tiled shading is its light-loop iterations ("evaluations"): every pixel with a surface loops over
+# its tile's whole list. Checked:
+#   1. the benchmark's deferred-tiled renderer evaluates at most 3x the ideal (pixel, light) pairs on
+#      the default scene at 1024 generated lights (the issue's target) and on the city (1024 generated
+#      lights and its own 757), and at least every ideal pair (ratio >= 0.999: a missed pair would be
+#      a missing light). "Ideal" is counted exactly on the CPU from the depth buffer
+#      (common/light_work.c: pairs whose surface point lies within the light's radius).
+#   2. the chapter counts exactly what the benchmark's copy of it counts (common/renderers.c), on
+#      each path: the compute shader's lists, and the GL 3.3 path's (COURSE_NO_COMPUTE=1 makes the
+#      benchmark take it); and both paths make the same lists (the same count).
+#   3. --tile-lights 16 on that frame: the tiles with more lights loop over every light, so the
+#      count grows (the picture does not: agree.10_tile_lights_16_same_picture).
+# Exit 77 (no GL context) passes through as a skip.
+set -u
+bench=$1 chapter=$2 out=$3
+rm -rf "$out"
+mkdir -p "$out"
+extra=()
+"$bench" --help 2>&1 | grep -q -- '--gbuffer-sweep' && extra=(--gbuffer-sweep off)
+run_bench() { # DIR SCENES LIGHTS
+    "$bench" --scenes "$2" --lights "$3" --renderers deferred-volumes,deferred-tiled --size 800x800 --frames 1 \
+        --warmup 0 --cutoffs 5 --cutoff-lights 64 --error-max-lights 0 --no-plots "${extra[@]}" --out "$1" \
+        >"$1.stdout" 2>"$1.stderr"
+    local rc=$?
+    [ $rc -eq 77 ] && { echo "skip: no GL context"; exit 77; }
+    [ $rc -ne 0 ] && { echo "FAIL: bench exited $rc"; cat "$1.stderr"; exit 1; }
+}
+run_bench "$out/gpu" default,city 1024,scene
+COURSE_NO_COMPUTE=1 run_bench "$out/cpu" default 1024
+
+# CSV columns: 1 sweep, 2 scene, 3 renderer, 4 light_set, 5 lights, 17 shaded (here: evaluations),
+# 19 ideal, 21 ratio.
+awk -F, '
+function fail(msg) { print "FAIL: " msg; bad = 1 }
+NR == 1 { next }
+$1 == "lights" && $3 == "deferred-tiled" {
+    checked++
+    printf "%-8s %5s lights (%s): tiled evaluates %s for %s ideal pairs = %s x\n", $2, $5, $4, $17, $19, $21
+    if ($21 == "NA" || $21 > 3.0) fail($2 " " $5 " lights: ratio " $21 " > 3")
+    if ($21 != "NA" && $21 < 0.999) fail($2 " " $5 " lights: ratio " $21 " < 1: pairs missed")
+}
+$1 == "lights" && $3 == "deferred-volumes" {
+    printf "%-8s %5s lights (%s): chapter 07 shades %s = %s x\n", $2, $5, $4, $17, $21
+}
+END { if (checked != 4) fail(checked " tiled rows, want 4"); exit bad }' "$out/gpu/bench.csv" || exit 1
+
+bench_count() { # DIR: deferred-tiled's count on the default scene, 1024 lights
+    awk -F, '$1 == "lights" && $2 == "default" && $3 == "deferred-tiled" && $5 == 1024 { print $17 }' "$1/bench.csv"
+}
+count() { # ARGS...: the chapter's shaded_pixels (the light-loop iterations) on that frame
+    "$chapter" --headless --size 800x800 --lights 1024 --frames 1 --warmup 0 --bench "$@" |
+        sed -n 's/.*shaded_pixels=\([0-9-]*\).*/\1/p'
+}
+gpu_bench=$(bench_count "$out/gpu") cpu_bench=$(bench_count "$out/cpu")
+gpu=$(count --path compute) cpu=$(count --path cpu) limited=$(count --tile-lights 16)
+echo "default, 1024 lights: the chapter evaluates $gpu (compute path), $cpu (GL 3.3 path), $limited" \
+    "(--tile-lights 16); the benchmark's renderer $gpu_bench (compute), $cpu_bench (COURSE_NO_COMPUTE=1)"
+[ -n "$gpu" ] && [ "$gpu" = "$gpu_bench" ] || { echo "FAIL: compute path: chapter $gpu, benchmark $gpu_bench"; exit 1; }
+[ -n "$cpu" ] && [ "$cpu" = "$cpu_bench" ] || { echo "FAIL: GL 3.3 path: chapter $cpu, benchmark $cpu_bench"; exit 1; }
+[ "$gpu" = "$cpu" ] || { echo "FAIL: the two paths' lists differ: $gpu against $cpu evaluations"; exit 1; }
+[ "$limited" -gt "$gpu" ] || { echo "FAIL: --tile-lights 16 evaluates $limited, not more than $gpu"; exit 1; }
+echo "ok"

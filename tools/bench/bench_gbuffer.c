@@ -1,0 +1,656 @@
+/* bench_gbuffer.c - see bench_gbuffer.h. */
+#include "bench_gbuffer.h"
+
+#include "bench_report.h"
+#include "bench_work.h"
+
+#include "deferred_volumes.h"
+#include "frame_stats.h"
+#include "frame_timer.h"
+#include "gbuffer.h"
+#include "gl_util.h"
+#include "light.h"
+#include "log.h"
+#include "renderers.h"
+#include "scene.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SCENES 2
+#define OTHER_SURFACE_DEG 5.0 /* a normal further off than this belongs to another surface */
+#define RAD_TO_DEG (180.0 / 3.14159265358979323846)
+
+static const char *const scene_names[SCENES] = {"default", "city"};
+static const char *const band_names[3] = {"near", "middle", "far"};
+
+typedef enum sweep_mode { SWEEP_ON, SWEEP_OFF, SWEEP_ONLY } sweep_mode;
+static sweep_mode mode = SWEEP_ON;
+
+/* One third of the covered pixels, by distance from the eye. */
+typedef struct band {
+    double distance;  /* the median distance of its pixels */
+    double mean, max; /* position error, scene units */
+} band;
+
+typedef struct layout_row {
+    bool measured;
+    char note[96];
+    int lights, frames;
+    double frame_ms, geometry_ms, lighting_ms;
+    double normal_max, normal_mean;
+    long covered, other_surface;
+    band bands[3];
+    image_stats vs_forward8; /* against forward at the same cut-off: what the layout alone costs */
+    bench_error vs_forward_hdr;
+    bool have_exact;    /* the exact reference is drawn up to --error-max-lights lights */
+    image_stats error8; /* against the exact reference (forward, fp32, cut-off 0) */
+    bench_error error_hdr;
+    image_stats vs_reference; /* 8-bit, tolerance 1, against the `reference` layout's picture */
+} layout_row;
+
+static layout_row rows[SCENES][GBUFFER_LAYOUT_COUNT];
+static bool scene_done[SCENES];
+static const char *pass_clock; /* frame_timer_clock() of the sweep's timers */
+
+/* ---- options ----------------------------------------------------------------------------------- */
+
+void bench_gbuffer_reset(bool quick)
+{
+    mode = quick ? SWEEP_OFF : SWEEP_ON;
+}
+
+int bench_gbuffer_parse_option(const char *arg, const char *value)
+{
+    if (strcmp(arg, "--gbuffer-sweep") != 0)
+        return 0;
+    static const char *const names[] = {"on", "off", "only"};
+    for (int k = 0; value && k < 3; k++)
+        if (strcmp(value, names[k]) == 0) {
+            mode = (sweep_mode)k;
+            return 1;
+        }
+    fprintf(stderr, "bench: bad --gbuffer-sweep (on, off or only): '%s' (see --help)\n",
+            value ? value : "(missing)");
+    return -1;
+}
+
+bool bench_gbuffer_enabled(void)
+{
+    return mode != SWEEP_OFF;
+}
+
+bool bench_gbuffer_only(void)
+{
+    return mode == SWEEP_ONLY;
+}
+
+void bench_gbuffer_print_help(FILE *f)
+{
+    fprintf(f, "  --gbuffer-sweep MODE   on: after the sweeps, every G-buffer layout (common/gbuffer.h) on\n"
+               "                        the default scene and the city: bytes, time, normal, position and\n"
+               "                        picture error (DIR/bench_gbuffer.csv, a section of bench.md);\n"
+               "                        off; only: nothing else (default on; --quick: off)\n");
+}
+
+/* ---- GL ---------------------------------------------------------------------------------------- */
+
+/* Everything one scene's sweep draws with: one G-buffer and light-volume set per layout, and the
+ * reference pass and probe that read positions and normals back as floats. */
+typedef struct sweep_gl {
+    int width, height;
+    bool available[GBUFFER_LAYOUT_COUNT];
+    gbuffer g[GBUFFER_LAYOUT_COUNT];
+    deferred_volumes dv[GBUFFER_LAYOUT_COUNT];
+    frame_timer timers[GBUFFER_LAYOUT_COUNT];
+    GLuint exact_program, probe_program;
+    fbo exact, probe;
+    float *exact_position, *exact_normal, *probe_normal, *probe_position, *hdr, *forward_hdr;
+    image reference_picture, forward_picture;
+    bool have_reference_picture;
+} sweep_gl;
+
+static void sweep_destroy(sweep_gl *s)
+{
+    for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
+        deferred_volumes_destroy(&s->dv[l]);
+        gbuffer_destroy(&s->g[l]);
+        frame_timer_destroy(&s->timers[l]);
+    }
+    gl_program_destroy(&s->exact_program);
+    gl_program_destroy(&s->probe_program);
+    fbo_destroy(&s->exact);
+    fbo_destroy(&s->probe);
+    free(s->exact_position);
+    free(s->exact_normal);
+    free(s->probe_normal);
+    free(s->probe_position);
+    free(s->hdr);
+    free(s->forward_hdr);
+    image_destroy(&s->reference_picture);
+    image_destroy(&s->forward_picture);
+    memset(s, 0, sizeof *s);
+}
+
+static bool sweep_create(sweep_gl *s, int width, int height)
+{
+    memset(s, 0, sizeof *s);
+    s->width = width, s->height = height;
+    size_t n = 4 * (size_t)width * (size_t)height;
+    s->exact_position = malloc(n * sizeof(float));
+    s->exact_normal = malloc(n * sizeof(float));
+    s->probe_normal = malloc(n * sizeof(float));
+    s->probe_position = malloc(n * sizeof(float));
+    s->hdr = malloc(n * sizeof(float));
+    s->forward_hdr = malloc(n * sizeof(float));
+    if (!s->exact_position || !s->exact_normal || !s->probe_normal || !s->probe_position || !s->hdr ||
+        !s->forward_hdr) {
+        log_error("out of memory for the G-buffer sweep's read-backs");
+        return false;
+    }
+    /* The geometry pass's own floats (gbuffer.frag with GBUFFER_EXACT), and a probe that decodes a
+     * layout's normal or position into a float target (gbuffer_view.frag's RAW views). */
+    const fbo_desc exact = {.color_formats = {GL_RGBA32F, GL_RGBA32F},
+                            .color_count = 2,
+                            .depth_format = GL_DEPTH_COMPONENT32F,
+                            .name = "exact normal and position"};
+    const fbo_desc probe = {.color_formats = {GL_RGBA32F}, .color_count = 1, .name = "G-buffer probe"};
+    s->exact_program = gl_program_load("forward.vert", "gbuffer.frag", "GBUFFER_EXACT 1");
+    s->probe_program = gl_program_load("fullscreen.vert", "gbuffer_view.frag", NULL);
+    if (!s->exact_program || !s->probe_program || !fbo_create(&s->exact, &exact, width, height) ||
+        !fbo_create(&s->probe, &probe, width, height))
+        return false;
+    for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
+        const gbuffer_layout *layout = &gbuffer_layouts[l];
+        if (!frame_timer_create(&s->timers[l]))
+            return false;
+        s->available[l] = gbuffer_layout_available(layout); /* reversed-z without clip control: no */
+        if (s->available[l] &&
+            (!gbuffer_create_with(&s->g[l], width, height, &(gbuffer_desc){.layout = layout}) ||
+             !deferred_volumes_create(&s->dv[l], &s->g[l], GL_RGBA16F)))
+            return false;
+    }
+    return gl_check("bench_gbuffer create");
+}
+
+static bool read_floats(const fbo *f, int attachment, float *out)
+{
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, f->id);
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)attachment);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, f->width, f->height, GL_RGBA, GL_FLOAT, out);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    return gl_check("bench_gbuffer read");
+}
+
+/* Chapter 07's frame with layout l: geometry pass, then the depth-tested volumes (their comparison
+ * and projection mirrored for reversed-Z, gbuffer_depth_test_begin), then present into target. */
+static bool draw_frame(sweep_gl *s, int l, const gpu_scene *gs, GLuint target)
+{
+    gl_pass_state pass = renderer_volume_pass;
+    gpu_scene view;
+    if (!gbuffer_render(&s->g[l], gs))
+        return false;
+    gbuffer_depth_test_begin(&s->g[l], gs, &view, &pass);
+    const deferred_volumes_frame f = {.volume_state = &pass, .accum_format = GL_RGBA16F};
+    bool ok = deferred_volumes_render(&s->dv[l], &s->g[l], &view, target, &f);
+    gbuffer_depth_test_end(&s->g[l]);
+    return ok;
+}
+
+/* The float position and normal of every covered pixel, as the geometry pass computes them. */
+static bool draw_exact(sweep_gl *s, const gpu_scene *gs)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, s->exact.id);
+    glViewport(0, 0, s->width, s->height);
+    gl_pass_state_apply(&(gl_pass_state){.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true});
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glUseProgram(s->exact_program);
+    gpu_scene_bind_objects(gs, s->exact_program, SHADER_UNIT_OBJECTS);
+    gpu_scene_draw(gs, s->exact_program);
+    gl_pass_state_reset();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return read_floats(&s->exact, 0, s->exact_position) && read_floats(&s->exact, 1, s->exact_normal);
+}
+
+/* What layout l's G-buffer decodes at every pixel: the normal, or the position (SHADER_GBUFFER_VIEW_*). */
+static bool probe(sweep_gl *s, int l, const gpu_scene *gs, int view, float *out)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, s->probe.id);
+    glViewport(0, 0, s->width, s->height);
+    gl_pass_state_reset();
+    gbuffer_bind_textures(&s->g[l], gs, s->probe_program, SHADER_UNIT_GBUFFER);
+    glUniform1i(glGetUniformLocation(s->probe_program, "u_view"), view);
+    glUniform2f(glGetUniformLocation(s->probe_program, "u_near_far"), gs->view.near_plane,
+                gs->view.far_plane);
+    gl_draw_fullscreen();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return read_floats(&s->probe, 0, out);
+}
+
+/* ---- error measures ---------------------------------------------------------------------------- */
+
+/* Angle between two directions in degrees, accurate near 0 (acos is not). */
+static double angle_deg(const float *a, const float *b)
+{
+    double c[3] = {(double)a[1] * b[2] - (double)a[2] * b[1], (double)a[2] * b[0] - (double)a[0] * b[2],
+                   (double)a[0] * b[1] - (double)a[1] * b[0]};
+    double d = (double)a[0] * b[0] + (double)a[1] * b[1] + (double)a[2] * b[2];
+    return atan2(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), d) * RAD_TO_DEG;
+}
+
+typedef struct sample {
+    double distance, error;
+} sample;
+
+static int by_distance(const void *a, const void *b)
+{
+    double x = ((const sample *)a)->distance, y = ((const sample *)b)->distance;
+    return (x > y) - (x < y);
+}
+
+/* Normal and position error of the probed layout against the exact floats. */
+static bool measure_precision(const sweep_gl *s, const gpu_scene *gs, layout_row *row)
+{
+    size_t n = (size_t)s->width * (size_t)s->height, used = 0;
+    sample *samples = malloc(n * sizeof *samples);
+    if (!samples) {
+        log_error("out of memory for the position errors");
+        return false;
+    }
+    double sum_deg = 0.0;
+    row->normal_max = 0.0, row->covered = 0, row->other_surface = 0;
+    for (size_t p = 0; p < n; p++) {
+        const float *xp = s->exact_position + 4 * p, *xn = s->exact_normal + 4 * p;
+        const float *pn = s->probe_normal + 4 * p, *pp = s->probe_position + 4 * p;
+        bool exact_covered = xp[3] > 0.5f, layout_covered = pn[3] > 0.5f;
+        if (!exact_covered && !layout_covered)
+            continue;
+        row->covered++;
+        double deg = exact_covered && layout_covered ? angle_deg(xn, pn) : 180.0;
+        if (deg > OTHER_SURFACE_DEG) {
+            row->other_surface++;
+            continue;
+        }
+        sum_deg += deg;
+        row->normal_max = fmax(row->normal_max, deg);
+        double dx = (double)pp[0] - xp[0], dy = (double)pp[1] - xp[1], dz = (double)pp[2] - xp[2];
+        double ex = (double)xp[0] - gs->view.eye[0], ey = (double)xp[1] - gs->view.eye[1],
+               ez = (double)xp[2] - gs->view.eye[2];
+        samples[used++] = (sample){sqrt(ex * ex + ey * ey + ez * ez), sqrt(dx * dx + dy * dy + dz * dz)};
+    }
+    row->normal_mean = used ? sum_deg / (double)used : 0.0;
+    qsort(samples, used, sizeof *samples, by_distance);
+    for (int b = 0; b < 3; b++) {
+        size_t lo = used * (size_t)b / 3, hi = used * (size_t)(b + 1) / 3;
+        band *out = &row->bands[b];
+        *out = (band){0};
+        for (size_t i = lo; i < hi; i++) {
+            out->mean += samples[i].error;
+            out->max = fmax(out->max, samples[i].error);
+        }
+        if (hi > lo) {
+            out->mean /= (double)(hi - lo);
+            out->distance = samples[(lo + hi) / 2].distance;
+        }
+    }
+    free(samples);
+    return true;
+}
+
+/* Chapter 00's forward renderer at the sweep's cut-off, 8-bit and linear: the same frame with every
+ * shading input a float, so the difference is what the layout's storage costs (as the agreement
+ * tests measure it). */
+static bool draw_forward(sweep_gl *s, bench_renderers *br, const gpu_scene *gs)
+{
+    const int r = bench_renderer_find("forward");
+    image_destroy(&s->forward_picture);
+    return bench_render_frame(br, r, gs, false, NULL) &&
+           bench_renderers_read_target(br, &s->forward_picture) &&
+           bench_read_linear(br, r, gs, s->forward_hdr);
+}
+
+static void compare8(const image *a, const image *b, image_stats *out)
+{
+    image_compare(a, b, NULL, 1, out, NULL);
+    if (!isfinite(out->psnr) || out->psnr > BENCH_PSNR_CAP)
+        out->psnr = BENCH_PSNR_CAP;
+}
+
+/* The picture against forward at the same cut-off, the exact reference (when drawn) and the
+ * `reference` layout's picture. */
+static bool measure_picture(sweep_gl *s, int l, bench_renderers *br, const bench_measure *m, bool exact,
+                            layout_row *row)
+{
+    image img;
+    if (!bench_renderers_read_target(br, &img) || !read_floats(&s->dv[l].accum, 0, s->hdr)) {
+        image_destroy(&img);
+        return false;
+    }
+    compare8(&img, &s->forward_picture, &row->vs_forward8);
+    bench_work_hdr_error(s->hdr, s->forward_hdr, s->width, s->height, &row->vs_forward_hdr);
+    row->have_exact = exact;
+    if (exact) {
+        compare8(&img, &m->ref8, &row->error8);
+        bench_work_hdr_error(s->hdr, m->ref_hdr, s->width, s->height, &row->error_hdr);
+    }
+    if (l == GBUFFER_LAYOUT_REFERENCE) {
+        image_destroy(&s->reference_picture);
+        s->reference_picture = img;
+        s->have_reference_picture = true;
+    }
+    if (s->have_reference_picture)
+        compare8(&img, &s->reference_picture, &row->vs_reference);
+    if (l != GBUFFER_LAYOUT_REFERENCE)
+        image_destroy(&img);
+    return true;
+}
+
+/* ---- the sweep --------------------------------------------------------------------------------- */
+
+static double pass_ms(const frame_times *t, const char *name)
+{
+    for (int j = 0; t->valid && j < t->count; j++)
+        if (strcmp(t->names[j], name) == 0)
+            return t->ms[j];
+    return NAN;
+}
+
+static double median_of(double *v, int n)
+{
+    int k = 0;
+    for (int i = 0; i < n; i++)
+        if (!isnan(v[i]))
+            v[k++] = v[i];
+    return k > 0 ? frame_stats_of(v, k).median : NAN;
+}
+
+/* Warm-up, then timed frames, every layout in turn within a round. */
+static bool time_layouts(sweep_gl *s, const bench_options *o, bench_renderers *br, const gpu_scene *gs,
+                         layout_row *out)
+{
+    const int warmup = o->warmup > 0 ? o->warmup : 1, frames = o->frames;
+    double *t = malloc(3 * (size_t)frames * GBUFFER_LAYOUT_COUNT * sizeof *t);
+    if (!t) {
+        log_error("out of memory for frame times");
+        return false;
+    }
+    bool ok = true;
+    GLuint target = bench_renderers_target(br)->id;
+    for (int k = 0; ok && k < warmup + frames; k++)
+        for (int l = 0; ok && l < GBUFFER_LAYOUT_COUNT; l++) {
+            if (!s->available[l])
+                continue;
+            double t0 = bench_measure_now_ms();
+            frame_timer_begin(&s->timers[l]);
+            ok = draw_frame(s, l, gs, target);
+            frame_timer_end(&s->timers[l]);
+            glFinish();
+            double ms = bench_measure_now_ms() - t0;
+            if (k < warmup)
+                continue;
+            double *slot = t + 3 * ((size_t)l * (size_t)frames + (size_t)(k - warmup));
+            slot[0] = ms;
+            slot[1] = pass_ms(&s->timers[l].last, "geometry");
+            slot[2] = pass_ms(&s->timers[l].last, "lighting");
+        }
+    double *column = malloc((size_t)frames * sizeof *column);
+    for (int l = 0; ok && column && l < GBUFFER_LAYOUT_COUNT; l++) {
+        double *medians[3] = {&out[l].frame_ms, &out[l].geometry_ms, &out[l].lighting_ms};
+        for (int j = 0; j < 3; j++) {
+            for (int i = 0; i < frames; i++)
+                column[i] = t[3 * ((size_t)l * (size_t)frames + (size_t)i) + (size_t)j];
+            *medians[j] = s->available[l] ? median_of(column, frames) : NAN;
+        }
+        out[l].frames = s->available[l] ? frames : 0;
+    }
+    if (!column)
+        log_error("out of memory for frame times");
+    ok = ok && column;
+    free(column);
+    free(t);
+    return ok;
+}
+
+static bool measure_layouts(sweep_gl *s, bench_renderers *br, const bench_measure *m, bool exact,
+                            const gpu_scene *gs, layout_row *out)
+{
+    if (!draw_exact(s, gs) || !draw_forward(s, br, gs))
+        return false;
+    for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
+        layout_row *row = &out[l];
+        if (!s->available[l]) {
+            snprintf(row->note, sizeof row->note, "not available: no glClipControl");
+            continue;
+        }
+        if (!draw_frame(s, l, gs, bench_renderers_target(br)->id) ||
+            !measure_picture(s, l, br, m, exact, row) ||
+            !probe(s, l, gs, SHADER_GBUFFER_VIEW_NORMAL_RAW, s->probe_normal) ||
+            !probe(s, l, gs, SHADER_GBUFFER_VIEW_POSITION_RAW, s->probe_position) ||
+            !measure_precision(s, gs, row))
+            return false;
+        row->measured = true;
+    }
+    return true;
+}
+
+static bool run_scene(const bench_options *o, int si, bench_renderers *br, bench_measure *m)
+{
+    char path[SCENE_PATH_MAX], key[BENCH_KEY_LEN];
+    bench_options_find_scene(o, scene_names[si], path, sizeof path);
+    scene sc;
+    if (!scene_load(path, &sc))
+        return false;
+    gpu_scene gs;
+    sweep_gl s;
+    bool ok = gpu_scene_create(&sc, &gs);
+    /* As in the main sweep, the exact reference (every light on every pixel) only up to
+     * --error-max-lights: beyond, it is the slowest frame of all. */
+    const bool exact = sc.light_count <= o->error_max_lights;
+    if (ok) {
+        snprintf(key, sizeof key, "gbuffer/%s", scene_names[si]);
+        ok = sweep_create(&s, o->width, o->height) &&
+             (!exact || bench_measure_make_reference(m, br, &gs, key, LIGHT_DEFAULT_CUTOFF)) &&
+             gpu_scene_update(&gs, 0.0f, LIGHT_DEFAULT_CUTOFF, o->width, o->height) &&
+             time_layouts(&s, o, br, &gs, rows[si]) && measure_layouts(&s, br, m, exact, &gs, rows[si]);
+        pass_clock = frame_timer_clock(&s.timers[0]);
+        for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
+            rows[si][l].lights = sc.light_count;
+            if (ok && rows[si][l].measured)
+                fprintf(stderr, "bench: gbuffer %-8s %-14s %2d bytes %9.2f ms, normal max %.4f deg\n",
+                        scene_names[si], gbuffer_layouts[l].name,
+                        gbuffer_layout_bytes(&gbuffer_layouts[l], false), rows[si][l].frame_ms,
+                        rows[si][l].normal_max);
+        }
+        sweep_destroy(&s);
+        gpu_scene_destroy(&gs);
+    }
+    scene_destroy(&sc);
+    bench_measure_forget_reference(m);
+    scene_done[si] = ok;
+    return ok;
+}
+
+bool bench_gbuffer_run(const bench_state *st, bench_renderers *br, bench_measure *m)
+{
+    double t0 = bench_measure_now_ms();
+    memset(rows, 0, sizeof rows);
+    memset(scene_done, 0, sizeof scene_done);
+    for (int si = 0; si < SCENES; si++)
+        if (!run_scene(&st->opt, si, br, m))
+            return false;
+    fprintf(stderr, "bench: G-buffer sweep in %.1f s\n", (bench_measure_now_ms() - t0) / 1000.0);
+    return gl_check("bench_gbuffer_run");
+}
+
+/* ---- reports ----------------------------------------------------------------------------------- */
+
+static const char *format_name(GLenum f)
+{
+    switch (f) {
+    case GL_SRGB8_ALPHA8: return "SRGB8_ALPHA8";
+    case GL_RGBA8: return "RGBA8";
+    case GL_RGBA16F: return "RGBA16F";
+    case GL_RGBA16: return "RGBA16";
+    case GL_DEPTH24_STENCIL8: return "D24S8";
+    case GL_DEPTH_COMPONENT32F: return "D32F";
+    default: return "?";
+    }
+}
+
+static const char *depth_name(const gbuffer_layout *l)
+{
+    return l->depth == GBUFFER_DEPTH_D32F_REVERSED ? "D32F reversed"
+                                                   : format_name(gbuffer_layout_depth_format(l, false));
+}
+
+static const char *normal_name(int encoding)
+{
+    switch (encoding) {
+    case SHADER_GBUFFER_NORMAL_HALF: return "2 halves";
+    case SHADER_GBUFFER_NORMAL_BYTES: return "2x8 bits";
+    case SHADER_GBUFFER_NORMAL_PACKED: return "2x12 bits";
+    default: return "2x16 bits";
+    }
+}
+
+static void put(FILE *f, bool have, const char *fmt, double v)
+{
+    fputc(',', f);
+    if (have && isfinite(v))
+        fprintf(f, fmt, v);
+    else
+        fputs("NA", f);
+}
+
+bool bench_gbuffer_write_csv(const bench_state *st)
+{
+    char tmp[1024];
+    FILE *f = bench_report_open_tmp(st->opt.out_dir, "bench_gbuffer.csv", tmp, sizeof tmp);
+    if (!f)
+        return false;
+    fprintf(
+        f, "scene,lights,layout,default,bytes,bytes_with_stencil,albedo_format,normal_format,normal_encoding,"
+           "depth_format,width,height,frames,median_ms,geometry_ms,lighting_ms,normal_max_deg,"
+           "normal_mean_deg,covered_pixels,other_surface_pixels");
+    for (int b = 0; b < 3; b++)
+        fprintf(f, ",%s_distance,%s_mean_error,%s_max_error", band_names[b], band_names[b], band_names[b]);
+    fprintf(f, ",vs_forward_max_8bit,vs_forward_pixels_over_1,vs_forward_mean_8bit,vs_forward_max_hdr,"
+               "vs_forward_mean_hdr,max_abs_8bit,mean_abs_8bit,psnr_8bit,max_abs_hdr,mean_abs_hdr,psnr_hdr,"
+               "vs_reference_max_8bit,vs_reference_pixels_over_1,pass_clock,note\n");
+    for (int si = 0; si < SCENES; si++)
+        for (int l = 0; scene_done[si] && l < GBUFFER_LAYOUT_COUNT; l++) {
+            const layout_row *r = &rows[si][l];
+            const gbuffer_layout *g = &gbuffer_layouts[l];
+            bool m = r->measured;
+            fprintf(f, "%s,%d,%s,%s,%d,%d,%s,%s,%s,%s,%d,%d,%d", scene_names[si], r->lights, g->name,
+                    g == gbuffer_default_layout() ? "yes" : "no", gbuffer_layout_bytes(g, false),
+                    gbuffer_layout_bytes(g, true), format_name(g->albedo_format),
+                    format_name(g->normal_format), normal_name(g->normal_encoding), depth_name(g),
+                    st->opt.width, st->opt.height, r->frames);
+            put(f, m, "%.3f", r->frame_ms);
+            put(f, m, "%.3f", r->geometry_ms);
+            put(f, m, "%.3f", r->lighting_ms);
+            put(f, m, "%.6f", r->normal_max);
+            put(f, m, "%.6f", r->normal_mean);
+            put(f, m, "%.0f", (double)r->covered);
+            put(f, m, "%.0f", (double)r->other_surface);
+            for (int b = 0; b < 3; b++) {
+                put(f, m, "%.4g", r->bands[b].distance);
+                put(f, m, "%.4g", r->bands[b].mean);
+                put(f, m, "%.4g", r->bands[b].max);
+            }
+            put(f, m, "%.0f", r->vs_forward8.max_abs);
+            put(f, m, "%.0f", (double)r->vs_forward8.over);
+            put(f, m, "%.5f", r->vs_forward8.mean_abs);
+            put(f, m, "%.6g", r->vs_forward_hdr.max_abs);
+            put(f, m, "%.6g", r->vs_forward_hdr.mean_abs);
+            bool x = m && r->have_exact;
+            put(f, x, "%.0f", r->error8.max_abs);
+            put(f, x, "%.5f", r->error8.mean_abs);
+            put(f, x, "%.2f", r->error8.psnr);
+            put(f, x, "%.6g", r->error_hdr.max_abs);
+            put(f, x, "%.6g", r->error_hdr.mean_abs);
+            put(f, x, "%.2f", r->error_hdr.psnr);
+            put(f, m, "%.0f", r->vs_reference.max_abs);
+            put(f, m, "%.0f", (double)r->vs_reference.over);
+            fprintf(f, ",%s,%s\n", pass_clock ? pass_clock : "NA", r->note);
+        }
+    return bench_report_close_tmp(f, tmp, st->opt.out_dir, "bench_gbuffer.csv");
+}
+
+static void write_layout_table(FILE *f)
+{
+    fprintf(f, "| layout | RT0 (albedo) | RT1 (normal) | depth | bytes | with stencil | loses |\n"
+               "|---|---|---|---|---|---|---|\n");
+    for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
+        const gbuffer_layout *g = &gbuffer_layouts[l];
+        fprintf(f, "| %s%s | %s | %s, %s | %s | %d | %d | %s |\n", g->name,
+                g == gbuffer_default_layout() ? " (default)" : "", format_name(g->albedo_format),
+                format_name(g->normal_format), normal_name(g->normal_encoding), depth_name(g),
+                gbuffer_layout_bytes(g, false), gbuffer_layout_bytes(g, true), g->loses);
+    }
+    fprintf(f, "\n");
+}
+
+void bench_gbuffer_write_md(FILE *f, const bench_state *st)
+{
+    const bench_options *o = &st->opt;
+    fprintf(f,
+            "\n## G-buffer layouts\n\n"
+            "Chapter 07's frame (deferred-volumes, cut-off 5/256) with every layout of common/gbuffer.h, "
+            "on each scene with its own lights, %dx%d; %d warm-up + %d timed frames per layout, layouts "
+            "interleaved frame by frame; passes on the %s clock. Normal: angle between the decoded normal "
+            "and the geometry pass's float normal. Position: distance between the position rebuilt from "
+            "depth and the interpolated float position, mean / max in scene units, over the nearest, "
+            "middle and farthest third of the covered pixels (their median distance from the eye in "
+            "brackets). Other surface: pixels where the layout's depth let another surface win (normal "
+            "more than %.0f° off), left out of the normal and position columns. Picture: against chapter "
+            "00's forward renderer at the same cut-off (what the storage alone costs: the agreement tests' "
+            "measure), the exact reference (forward, fp32, cut-off 0; up to %d lights, NA beyond) and the "
+            "`reference` layout's picture (largest 8-bit difference, pixels more than 1/255 apart).\n\n",
+            o->width, o->height, o->warmup > 0 ? o->warmup : 1, o->frames, pass_clock ? pass_clock : "frame",
+            OTHER_SURFACE_DEG, o->error_max_lights);
+    write_layout_table(f);
+    fprintf(f, "| scene | layout | bytes | frame ms | geometry ms | lighting ms | normal max° | "
+               "normal mean° |");
+    for (int b = 0; b < 3; b++)
+        fprintf(f, " position, %s third |", band_names[b]);
+    fprintf(f, " other surface |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (int si = 0; si < SCENES; si++)
+        for (int l = 0; scene_done[si] && l < GBUFFER_LAYOUT_COUNT; l++) {
+            const layout_row *r = &rows[si][l];
+            if (!r->measured) {
+                fprintf(f, "| %s | %s | – | %s | | | | | | | | |\n", scene_names[si], gbuffer_layouts[l].name,
+                        r->note);
+                continue;
+            }
+            fprintf(f, "| %s | %s | %d | %.1f | %.1f | %.1f | %.4f | %.4f |", scene_names[si],
+                    gbuffer_layouts[l].name, gbuffer_layout_bytes(&gbuffer_layouts[l], false), r->frame_ms,
+                    r->geometry_ms, r->lighting_ms, r->normal_max, r->normal_mean);
+            for (int b = 0; b < 3; b++)
+                fprintf(f, " %.2g / %.2g (%.3g) |", r->bands[b].mean, r->bands[b].max, r->bands[b].distance);
+            fprintf(f, " %ld |\n", r->other_surface);
+        }
+    fprintf(f, "\n| scene | layout | vs forward: max 8-bit, pixels > 1 | mean 8-bit | max HDR | mean HDR | "
+               "vs exact: mean 8-bit | PSNR 8-bit dB | mean HDR | PSNR HDR dB | vs reference layout: max, "
+               "pixels > 1 |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (int si = 0; si < SCENES; si++)
+        for (int l = 0; scene_done[si] && l < GBUFFER_LAYOUT_COUNT; l++) {
+            const layout_row *r = &rows[si][l];
+            if (!r->measured)
+                continue;
+            fprintf(f, "| %s | %s | %d, %ld | %.4f | %.3g | %.3g |", scene_names[si], gbuffer_layouts[l].name,
+                    r->vs_forward8.max_abs, r->vs_forward8.over, r->vs_forward8.mean_abs,
+                    r->vs_forward_hdr.max_abs, r->vs_forward_hdr.mean_abs);
+            if (r->have_exact)
+                fprintf(f, " %.4f | %.1f | %.3g | %.1f |", r->error8.mean_abs, r->error8.psnr,
+                        r->error_hdr.mean_abs, r->error_hdr.psnr);
+            else
+                fprintf(f, " NA | NA | NA | NA |");
+            fprintf(f, " %d, %ld |\n", r->vs_reference.max_abs, r->vs_reference.over);
+        }
+    fprintf(f, "\n");
+}
