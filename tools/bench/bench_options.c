@@ -10,8 +10,8 @@
 #include <string.h>
 
 static const char *const default_renderers =
-    "forward-naive,forward,deferred-fullscreen,deferred-volumes,deferred-volumes-windowed,deferred-stencil,"
-    "deferred-tiled";
+    "forward-naive,forward,forward-plus,deferred-fullscreen,deferred-volumes,deferred-volumes-windowed,"
+    "deferred-stencil,deferred-tiled,deferred-clustered";
 
 void bench_options_print_help(FILE *f)
 {
@@ -27,13 +27,15 @@ void bench_options_print_help(FILE *f)
         "                        (default default,city,bunnies,sphere,teapots)\n"
         "  --renderers LIST      of: forward-naive forward forward-prepass forward-lists\n"
         "                        deferred-fullscreen deferred-volumes deferred-volumes-windowed\n"
-        "                        deferred-stencil deferred-tiled\n"
-        "                        (default: forward-naive, forward, deferred-fullscreen, deferred-volumes,\n"
+        "                        deferred-stencil deferred-tiled forward-plus deferred-clustered\n"
+        "                        (default: forward-naive, forward, forward-plus (chapter 11's Forward+),\n"
+        "                        deferred-fullscreen, deferred-volumes,\n"
         "                        deferred-volumes-windowed: chapter 07 with the windowed falloff, whose\n"
         "                        error against the exact hard-falloff picture is the model's price,\n"
         "                        deferred-stencil: chapter 08's stencil light volumes, deferred-tiled:\n"
-        "                        chapter 10's per-tile light lists, whose shaded_pixels are light-loop\n"
-        "                        iterations)\n"
+        "                        chapter 10's per-tile light lists, deferred-clustered: chapter 11's\n"
+        "                        clustered deferred; for tiled, clustered and Forward+ shaded_pixels are\n"
+        "                        light-loop iterations)\n"
         "  --cutoffs LIST        cut-off sweep in 1/256 units (default 0.5,1,2,5,10,20,32)\n"
         "  --cutoff-scene NAME   scene of the cut-off sweep (default: the first of --scenes)\n"
         "  --cutoff-lights N     light count of the cut-off sweep (default 256)\n"
