@@ -134,8 +134,10 @@ echo "wrote $data/chapters.md"
 bench_args=()
 $quick && bench_args=(--quick)
 build/bin/bench --out "$data/bench" "${bench_args[@]}"
-# The stamp goes on top of the benchmark's own report, which names the machine too.
-{ printf '%s\n\n' "$stamp"; cat "$data/bench/bench.md"; } >"$data/bench/bench.md.tmp"
+# The stamp goes on top of the benchmark's own report, which names the machine too; Forward+ against
+# the best deferred renderer, case by case, is read from the same run's CSV.
+{ printf '%s\n\n' "$stamp"; cat "$data/bench/bench.md"; echo; scripts/forward-plus-table.sh "$data/bench/bench.csv"; } \
+  >"$data/bench/bench.md.tmp"
 mv "$data/bench/bench.md.tmp" "$data/bench/bench.md"
 /usr/bin/python3 tests/doc_generated.py --update "$root"
 echo "the pages now show this run; review with: git diff docs"
