@@ -2,229 +2,409 @@
 set terminal pngcairo size 1500,900 font ',10'
 set datafile missing 'NA'
 $t_0_0 << EOD
-1 8.4515 1
-4 13.7263 1
-16 36.4175 1
-64 127.5645 1
-256 492.1542 1
-1024 1950.5131 0
-4096 7783.9486 0
+1 8.2127 1
+4 14.4387 1
+16 39.1037 1
+64 138.4061 1
+256 531.0609 1
+1024 2101.6801 0
+4096 8384.1568 0
 EOD
 $t_0_1 << EOD
-1 8.7266 1
-4 13.3361 1
-16 30.2579 1
-64 90.2598 1
-256 330.5667 1
-1024 1262.2508 1
-4096 4988.9874 0
+1 8.0869 1
+4 13.5911 1
+16 32.0012 1
+64 96.8782 1
+256 353.6607 1
+1024 1355.6379 1
+4096 5363.5464 0
 EOD
 $t_0_2 << EOD
-1 18.6975 1
-4 22.3400 1
-16 39.2839 1
-64 107.2043 1
-256 380.8037 1
-1024 1456.5367 1
-4096 5759.4688 0
+1 15.7487 1
+4 28.8414 1
+16 40.7311 1
+64 40.1483 1
+256 25.5658 1
+1024 22.3809 1
+4096 35.9311 1
 EOD
 $t_0_3 << EOD
-1 20.7353 1
-4 36.9199 1
-16 51.0913 1
-64 48.5807 1
-256 46.0200 1
-1024 56.5736 1
-4096 114.7515 1
+1 16.5360 1
+4 21.1537 1
+16 39.6882 1
+64 112.1768 1
+256 401.1225 1
+1024 1556.9053 0
+4096 6180.0366 0
 EOD
 $t_0_4 << EOD
-1 20.1512 1
-4 36.5343 1
-16 50.9319 1
-64 48.5501 1
-256 45.7463 1
-1024 56.9449 1
-4096 115.3566 1
+1 18.5125 1
+4 35.8299 1
+16 50.3494 1
+64 48.2082 1
+256 45.3086 1
+1024 53.1331 1
+4096 116.3887 1
+EOD
+$t_0_5 << EOD
+1 18.4443 1
+4 35.6010 1
+16 50.5489 1
+64 48.2150 1
+256 45.5677 1
+1024 52.8948 1
+4096 114.1553 1
+EOD
+$t_0_6 << EOD
+1 21.9989 1
+4 41.0524 1
+16 59.0336 1
+64 71.4621 1
+256 77.6701 1
+1024 105.4188 1
+4096 249.2498 1
+EOD
+$t_0_7 << EOD
+1 44.8604 1
+4 49.0068 1
+16 51.3488 1
+64 49.9697 1
+256 48.9143 1
+1024 50.4901 1
+4096 63.9485 1
+EOD
+$t_0_8 << EOD
+1 26.2496 1
+4 39.2007 1
+16 50.6870 1
+64 50.1306 1
+256 34.7045 1
+1024 32.2712 1
+4096 45.3249 1
 EOD
 $t_1_0 << EOD
-1 34.4975 1
-4 51.4234 1
-16 130.2676 1
-64 444.4847 1
-256 1701.3529 0
-1024 6728.8258 0
-4096 26838.7174 0
+1 30.4343 1
+4 53.0424 1
+16 136.4250 1
+64 479.8273 1
+256 1853.4363 0
+1024 7347.8722 0
+4096 29325.6158 0
 EOD
 $t_1_1 << EOD
-1 29.7771 1
-4 39.9885 1
-16 57.2269 1
-64 106.6678 1
-256 278.7475 1
-1024 970.3427 1
-4096 3736.7233 0
+1 24.5540 1
+4 36.2827 1
+16 53.9960 1
+64 107.1845 1
+256 296.1437 1
+1024 1039.4927 1
+4096 4012.8888 0
 EOD
 $t_1_2 << EOD
-1 41.1869 1
-4 46.6878 1
-16 69.8668 1
-64 159.4670 1
-256 516.3923 1
-1024 1944.0935 0
-4096 7654.8983 0
+1 35.0498 1
+4 57.7247 1
+16 60.3669 1
+64 63.3433 1
+256 60.3307 1
+1024 56.8458 1
+4096 62.4750 1
 EOD
 $t_1_3 << EOD
-1 46.5884 1
-4 68.0999 1
-16 88.5216 1
-64 98.2416 1
-256 83.4563 1
-1024 89.0043 1
-4096 135.7692 1
+1 29.3941 1
+4 36.9541 1
+16 60.5885 1
+64 159.1559 1
+256 549.7070 1
+1024 2111.9116 0
+4096 8360.7297 0
 EOD
 $t_1_4 << EOD
-1 48.1776 1
-4 68.0444 1
-16 88.2065 1
-64 97.1674 1
-256 83.4429 1
-1024 89.0285 1
-4096 134.9188 1
+1 33.6315 1
+4 55.9807 1
+16 74.5287 1
+64 85.0115 1
+256 79.3696 1
+1024 80.2750 1
+4096 103.9127 1
+EOD
+$t_1_5 << EOD
+1 34.3296 1
+4 56.0422 1
+16 75.0396 1
+64 86.1090 1
+256 79.3430 1
+1024 79.7808 1
+4096 105.2756 1
+EOD
+$t_1_6 << EOD
+1 36.6042 1
+4 61.4646 1
+16 85.1154 1
+64 101.4659 1
+256 105.4720 1
+1024 125.1744 1
+4096 189.5352 1
+EOD
+$t_1_7 << EOD
+1 60.6562 1
+4 64.6722 1
+16 68.4036 1
+64 71.5131 1
+256 71.6537 1
+1024 72.2428 1
+4096 85.1396 1
+EOD
+$t_1_8 << EOD
+1 39.2435 1
+4 59.3366 1
+16 55.6054 1
+64 54.9971 1
+256 52.8214 1
+1024 50.7919 1
+4096 54.0337 1
 EOD
 $t_2_0 << EOD
-1 76.9989 1
-4 82.5351 1
-16 166.4725 1
-64 467.1266 1
-256 1669.7428 0
-1024 6480.2077 0
-4096 25722.0675 0
+1 411.5693 1
+4 449.4560 1
+16 534.3984 1
+64 993.9960 1
+256 2832.3868 0
+1024 10185.9499 0
+4096 39600.2023 0
 EOD
 $t_2_1 << EOD
-1 102.6023 1
-4 107.5498 1
-16 113.0290 1
-64 116.7616 1
-256 125.6705 1
-1024 156.4571 1
-4096 369.4460 1
+1 687.6227 1
+4 702.7647 1
+16 679.4780 1
+64 772.7529 1
+256 723.4548 1
+1024 763.6982 1
+4096 1070.2389 1
 EOD
 $t_2_2 << EOD
-1 77.7733 1
-4 71.5463 1
-16 87.2179 1
-64 124.3632 1
-256 277.9962 1
-1024 901.1703 1
-4096 3393.8666 0
+1 724.1122 1
+4 732.6379 1
+16 693.9640 1
+64 749.3830 1
+256 703.5504 1
+1024 708.8606 1
+4096 768.2518 1
 EOD
 $t_2_3 << EOD
-1 78.4715 1
-4 81.9090 1
-16 92.1794 1
-64 89.6815 1
-256 92.7641 1
-1024 108.4621 1
-4096 247.2404 1
+1 370.7120 1
+4 381.9292 1
+16 378.5750 1
+64 428.9557 1
+256 584.7121 1
+1024 1252.1703 1
+4096 3922.0031 0
 EOD
 $t_2_4 << EOD
-1 81.9378 1
-4 78.8555 1
-16 90.5416 1
-64 88.2646 1
-256 92.5959 1
-1024 109.7412 1
-4096 250.9847 1
+1 380.0409 1
+4 384.6875 1
+16 389.6554 1
+64 383.0130 1
+256 395.5879 1
+1024 408.7880 1
+4096 543.8927 1
+EOD
+$t_2_5 << EOD
+1 385.0543 1
+4 387.9823 1
+16 373.1423 1
+64 387.7547 1
+256 391.7551 1
+1024 406.0190 1
+4096 532.7880 1
+EOD
+$t_2_6 << EOD
+1 377.9626 1
+4 396.7826 1
+16 385.2734 1
+64 405.9695 1
+256 411.5182 1
+1024 431.5605 1
+4096 629.5744 1
+EOD
+$t_2_7 << EOD
+1 410.2647 1
+4 408.2070 1
+16 406.3920 1
+64 426.5404 1
+256 411.0030 1
+1024 411.0886 1
+4096 432.4758 1
+EOD
+$t_2_8 << EOD
+1 388.2452 1
+4 385.6440 1
+16 382.6530 1
+64 376.0532 1
+256 369.3314 1
+1024 375.7456 1
+4096 390.5526 1
 EOD
 $t_3_0 << EOD
-1 9.4326 1
-4 14.3308 1
-16 33.0021 1
-64 112.4749 1
-256 426.4344 1
-1024 1682.2723 0
-4096 6705.6238 0
+1 8.5685 1
+4 13.9518 1
+16 35.0992 1
+64 120.0311 1
+256 461.2719 1
+1024 1826.2350 0
+4096 7286.0874 0
 EOD
 $t_3_1 << EOD
-1 13.8058 1
-4 18.5332 1
-16 33.5835 1
-64 72.9332 1
-256 192.3326 1
-1024 708.6859 1
-4096 2774.0992 0
+1 10.3683 1
+4 15.7427 1
+16 35.1633 1
+64 77.3911 1
+256 206.4037 1
+1024 747.8011 1
+4096 2913.3908 0
 EOD
 $t_3_2 << EOD
-1 23.1912 1
-4 25.3355 1
-16 31.2227 1
-64 70.0205 1
-256 225.0296 1
-1024 859.2501 1
-4096 3396.1318 0
+1 14.7471 1
+4 21.4990 1
+16 18.5603 1
+64 17.8066 1
+256 18.4749 1
+1024 39.5863 1
+4096 123.0080 1
 EOD
 $t_3_3 << EOD
-1 24.9243 1
-4 33.5376 1
-16 30.5146 1
-64 35.1216 1
-256 46.5615 1
-1024 144.6106 1
-4096 542.6366 1
+1 17.2573 1
+4 20.0259 1
+16 30.7356 1
+64 72.6912 1
+256 239.8903 1
+1024 912.3616 1
+4096 3602.2468 0
 EOD
 $t_3_4 << EOD
-1 24.7796 1
-4 32.1363 1
-16 30.4394 1
-64 34.9519 1
-256 46.6232 1
-1024 143.2051 1
-4096 538.2435 1
+1 17.6522 1
+4 27.9475 1
+16 29.3409 1
+64 33.9113 1
+256 46.0620 1
+1024 150.8375 1
+4096 544.0584 1
+EOD
+$t_3_5 << EOD
+1 17.5692 1
+4 27.9449 1
+16 29.2964 1
+64 34.0792 1
+256 46.1820 1
+1024 152.3290 1
+4096 540.1977 1
+EOD
+$t_3_6 << EOD
+1 21.6343 1
+4 33.7036 1
+16 32.3964 1
+64 35.8827 1
+256 51.4115 1
+1024 180.3369 1
+4096 650.3892 1
+EOD
+$t_3_7 << EOD
+1 44.3455 1
+4 46.3315 1
+16 45.5202 1
+64 45.6107 1
+256 46.3446 1
+1024 56.7672 1
+4096 88.8381 1
+EOD
+$t_3_8 << EOD
+1 23.4378 1
+4 28.8953 1
+16 26.0577 1
+64 25.2311 1
+256 25.8327 1
+1024 42.4967 1
+4096 100.2532 1
 EOD
 $t_4_0 << EOD
-1 37.2919 1
-4 52.2710 1
-16 108.5126 1
-64 338.1050 1
-256 1255.5891 1
-1024 4925.5255 0
-4096 19605.2711 0
+1 37.7881 1
+4 53.7931 1
+16 116.0381 1
+64 363.0177 1
+256 1353.4715 1
+1024 5315.2867 0
+4096 21162.5474 0
 EOD
 $t_4_1 << EOD
-1 54.6840 1
-4 64.8857 1
-16 99.3826 1
-64 205.2751 1
-256 614.3676 1
-1024 2250.7376 0
-4096 8796.2174 0
+1 54.8911 1
+4 68.7769 1
+16 102.0452 1
+64 214.4808 1
+256 664.8797 1
+1024 2466.4756 0
+4096 9672.8592 0
 EOD
 $t_4_2 << EOD
-1 44.6940 1
-4 51.2414 1
-16 80.0737 1
-64 190.2870 1
-256 631.2923 1
-1024 2395.3135 0
-4096 9451.3984 0
+1 64.6844 1
+4 99.4104 1
+16 137.9676 1
+64 126.8177 1
+256 107.7248 1
+1024 101.9694 1
+4096 104.7036 1
 EOD
 $t_4_3 << EOD
-1 49.1894 1
-4 76.0734 1
-16 113.4404 1
-64 125.3306 1
-256 124.9326 1
-1024 110.5668 1
-4096 101.5532 1
+1 40.8962 1
+4 50.8806 1
+16 79.4817 1
+64 203.9298 1
+256 675.6921 1
+1024 2562.7410 0
+4096 10110.9370 0
 EOD
 $t_4_4 << EOD
-1 49.6802 1
-4 79.1353 1
-16 113.9605 1
-64 126.0882 1
-256 126.0905 1
-1024 109.3464 1
-4096 101.5979 1
+1 46.7002 1
+4 73.8633 1
+16 118.2114 1
+64 126.3466 1
+256 123.4010 1
+1024 108.1835 1
+4096 102.9916 1
+EOD
+$t_4_5 << EOD
+1 47.0249 1
+4 75.2431 1
+16 121.6542 1
+64 122.2233 1
+256 124.1430 1
+1024 106.8058 1
+4096 99.6459 1
+EOD
+$t_4_6 << EOD
+1 52.8402 1
+4 81.9034 1
+16 134.7549 1
+64 127.9544 1
+256 134.5358 1
+1024 132.1461 1
+4096 166.3082 1
+EOD
+$t_4_7 << EOD
+1 70.3902 1
+4 78.8185 1
+16 88.3389 1
+64 89.5955 1
+256 89.7745 1
+1024 89.4302 1
+4096 101.6106 1
+EOD
+$t_4_8 << EOD
+1 52.9300 1
+4 79.4366 1
+16 111.0767 1
+64 101.9627 1
+256 81.3892 1
+1024 76.0952 1
+4096 75.8065 1
 EOD
 set output 'docs/data/bench/time_vs_lights.png.tmp'
 set multiplot layout 2,3 title 'Median ms per frame against light count, 800x800, llvmpipe (LLVM 15.0.6, 256 bits) (log-log; open marks: extrapolated)'
@@ -236,71 +416,127 @@ set ylabel 'ms per frame'
 set title 'default'
 plot $t_0_0 using 1:2 with lines lc 1 title 'forward-naive', $t_0_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_0_1 using 1:2 with lines lc 2 title 'forward', $t_0_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_0_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_0_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_0_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_0_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_0_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_0_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
+     $t_0_2 using 1:2 with lines lc 3 title 'forward-plus', $t_0_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
+     $t_0_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_0_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_0_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_0_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
+     $t_0_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_0_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_0_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
+     $t_0_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_0_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_0_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
+     $t_0_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_0_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_0_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
+     $t_0_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_0_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_0_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
 set title 'city'
 plot $t_1_0 using 1:2 with lines lc 1 title 'forward-naive', $t_1_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_1_1 using 1:2 with lines lc 2 title 'forward', $t_1_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_1_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_1_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_1_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_1_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_1_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_1_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
+     $t_1_2 using 1:2 with lines lc 3 title 'forward-plus', $t_1_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
+     $t_1_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_1_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_1_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_1_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
+     $t_1_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_1_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_1_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
+     $t_1_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_1_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_1_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
+     $t_1_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_1_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_1_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
+     $t_1_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_1_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_1_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
 set title 'bunnies'
 plot $t_2_0 using 1:2 with lines lc 1 title 'forward-naive', $t_2_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_2_1 using 1:2 with lines lc 2 title 'forward', $t_2_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_2_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_2_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_2_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_2_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_2_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_2_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
+     $t_2_2 using 1:2 with lines lc 3 title 'forward-plus', $t_2_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
+     $t_2_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_2_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_2_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_2_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
+     $t_2_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_2_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_2_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
+     $t_2_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_2_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_2_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
+     $t_2_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_2_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_2_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
+     $t_2_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_2_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_2_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
 set title 'sphere'
 plot $t_3_0 using 1:2 with lines lc 1 title 'forward-naive', $t_3_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_3_1 using 1:2 with lines lc 2 title 'forward', $t_3_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_3_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_3_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_3_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_3_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_3_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_3_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
+     $t_3_2 using 1:2 with lines lc 3 title 'forward-plus', $t_3_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
+     $t_3_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_3_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_3_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_3_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
+     $t_3_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_3_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_3_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
+     $t_3_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_3_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_3_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
+     $t_3_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_3_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_3_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
+     $t_3_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_3_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_3_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
 set title 'teapots'
 plot $t_4_0 using 1:2 with lines lc 1 title 'forward-naive', $t_4_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
      $t_4_1 using 1:2 with lines lc 2 title 'forward', $t_4_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_4_2 using 1:2 with lines lc 3 title 'deferred-fullscreen', $t_4_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_4_3 using 1:2 with lines lc 4 title 'deferred-volumes', $t_4_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_4_4 using 1:2 with lines lc 5 title 'deferred-volumes-windowed', $t_4_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle
+     $t_4_2 using 1:2 with lines lc 3 title 'forward-plus', $t_4_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
+     $t_4_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_4_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
+     $t_4_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_4_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
+     $t_4_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_4_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_4_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
+     $t_4_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_4_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_4_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
+     $t_4_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_4_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_4_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
+     $t_4_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_4_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_4_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
 unset multiplot
 $e_0 << EOD
 EOD
 $e_1 << EOD
-7.22861 373.0676 0.0144153 0.5
-11.4784 348.5643 0.021697 1
-14.9631 338.8010 0.0270504 2
-18.982 333.3817 0.0324618 5
-21.3178 330.5534 0.035426 10
-23.4325 325.6685 0.0381214 20
-23.9771 322.6852 0.0388776 32
+7.22861 398.4250 0.0144153 0.5
+11.4784 375.2486 0.021697 1
+14.9631 364.7002 0.0270504 2
+18.982 356.7660 0.0324618 5
+21.3178 352.3335 0.035426 10
+23.4325 347.7894 0.0381214 20
+23.9771 342.7033 0.0388776 32
 EOD
 $e_2 << EOD
-7.29054 381.7538 nan 0.5
-11.536 374.9914 nan 1
-15.0156 376.2949 nan 2
-19.0187 379.9540 nan 5
-21.3276 384.0683 nan 10
-23.4215 379.5452 nan 20
-23.9613 381.0966 nan 32
+7.22861 334.2090 0.0144153 0.5
+11.4784 150.0728 0.021697 1
+14.9631 65.0498 0.0270504 2
+18.982 26.1145 0.0324618 5
+21.3178 15.5872 0.035426 10
+23.4325 11.8876 0.0381214 20
+23.9771 10.6475 0.0388776 32
 EOD
 $e_3 << EOD
-7.50485 415.7743 0.0149456 0.5
-11.6169 198.5301 0.0219389 1
-15.0473 108.6430 0.0271878 2
-19.0284 54.3091 0.0325462 5
-21.3312 37.6043 0.0354934 10
-23.4224 29.2403 0.0381772 20
-23.9618 25.9359 0.0389306 32
+7.28246 403.2126 nan 0.5
+11.5296 403.2966 nan 1
+15.0112 406.2226 nan 2
+19.0165 405.9924 nan 5
+21.3264 401.7818 nan 10
+23.421 401.3558 nan 20
+23.9611 402.8669 nan 32
 EOD
 $e_4 << EOD
-11.6713 421.2602 0.0220646 0.5
-15.1065 198.5889 0.0273168 1
-18.1095 108.0345 0.0314616 2
-21.2181 54.3806 0.0354799 5
-22.9628 37.8923 0.0377166 10
-23.9984 28.9697 0.0390677 20
-24.2996 26.2267 0.0394998 32
+7.49654 413.4989 0.0149296 0.5
+11.6106 195.9671 0.0219278 1
+15.0429 106.8076 0.0271806 2
+19.0262 52.9162 0.0325424 5
+21.33 29.4698 0.0354912 10
+23.4219 21.4415 0.0381763 20
+23.9616 18.6818 0.0389301 32
+EOD
+$e_5 << EOD
+11.6649 413.4035 0.0220537 0.5
+15.1021 195.6398 0.0273095 1
+18.1067 107.5061 0.0314571 2
+21.2168 53.1318 0.0354777 5
+22.9621 29.2455 0.0377154 10
+23.9982 21.3114 0.0390673 20
+24.2995 18.5516 0.0394997 32
+EOD
+$e_6 << EOD
+7.50338 541.7893 0.0149434 0.5
+11.6121 283.8517 0.0219304 1
+15.0432 188.6165 0.0271814 2
+19.0262 97.6147 0.0325425 5
+21.33 49.4461 0.0354912 10
+23.422 34.5944 0.0381763 20
+23.9616 28.9014 0.0389301 32
+EOD
+$e_7 << EOD
+7.28246 135.3143 nan 0.5
+11.5296 81.4785 nan 1
+15.0112 62.9064 nan 2
+19.0165 52.4098 nan 5
+21.3264 46.1330 nan 10
+23.421 44.7647 nan 20
+23.9611 44.3645 nan 32
+EOD
+$e_8 << EOD
+7.28246 332.4923 0.0145279 0.5
+11.5296 155.8746 0.0217917 1
+15.0112 76.2509 0.0271301 2
+19.0165 38.2436 0.0325252 5
+21.3264 25.8844 0.0354808 10
+23.421 22.1735 0.0381688 20
+23.9611 21.0848 0.0389232 32
 EOD
 set output 'docs/data/bench/speed_vs_error.png.tmp'
 unset logscale
@@ -312,13 +548,21 @@ set ylabel 'ms per frame'
 set title '8-bit display error'
 set xlabel 'mean |error| in 8-bit levels'
 plot $e_1 using 1:2 with linespoints lc 2 pt 7 title 'forward', $e_1 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 2 notitle, \
-     $e_2 using 1:2 with linespoints lc 3 pt 7 title 'deferred-fullscreen', $e_2 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 3 notitle, \
-     $e_3 using 1:2 with linespoints lc 4 pt 7 title 'deferred-volumes', $e_3 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle, \
-     $e_4 using 1:2 with linespoints lc 5 pt 7 title 'deferred-volumes-windowed', $e_4 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 5 notitle
+     $e_2 using 1:2 with linespoints lc 3 pt 7 title 'forward-plus', $e_2 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 3 notitle, \
+     $e_3 using 1:2 with linespoints lc 4 pt 7 title 'deferred-fullscreen', $e_3 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle, \
+     $e_4 using 1:2 with linespoints lc 5 pt 7 title 'deferred-volumes', $e_4 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 5 notitle, \
+     $e_5 using 1:2 with linespoints lc 6 pt 7 title 'deferred-volumes-windowed', $e_5 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 6 notitle, \
+     $e_6 using 1:2 with linespoints lc 7 pt 7 title 'deferred-stencil', $e_6 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 7 notitle, \
+     $e_7 using 1:2 with linespoints lc 8 pt 7 title 'deferred-tiled', $e_7 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 8 notitle, \
+     $e_8 using 1:2 with linespoints lc 9 pt 7 title 'deferred-clustered', $e_8 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 9 notitle
 set title 'linear HDR error (renderers with a linear output)'
 set xlabel 'mean |error| of linear radiance'
 plot $e_1 using 3:2 with linespoints lc 2 pt 7 title 'forward', $e_1 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 2 notitle, \
-     $e_2 using 3:2 with linespoints lc 3 pt 7 title 'deferred-fullscreen', $e_2 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 3 notitle, \
-     $e_3 using 3:2 with linespoints lc 4 pt 7 title 'deferred-volumes', $e_3 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle, \
-     $e_4 using 3:2 with linespoints lc 5 pt 7 title 'deferred-volumes-windowed', $e_4 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 5 notitle
+     $e_2 using 3:2 with linespoints lc 3 pt 7 title 'forward-plus', $e_2 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 3 notitle, \
+     $e_3 using 3:2 with linespoints lc 4 pt 7 title 'deferred-fullscreen', $e_3 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle, \
+     $e_4 using 3:2 with linespoints lc 5 pt 7 title 'deferred-volumes', $e_4 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 5 notitle, \
+     $e_5 using 3:2 with linespoints lc 6 pt 7 title 'deferred-volumes-windowed', $e_5 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 6 notitle, \
+     $e_6 using 3:2 with linespoints lc 7 pt 7 title 'deferred-stencil', $e_6 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 7 notitle, \
+     $e_7 using 3:2 with linespoints lc 8 pt 7 title 'deferred-tiled', $e_7 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 8 notitle, \
+     $e_8 using 3:2 with linespoints lc 9 pt 7 title 'deferred-clustered', $e_8 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 9 notitle
 unset multiplot
