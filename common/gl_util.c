@@ -214,59 +214,53 @@ static GLuint compile(GLenum type, const char *name, const char *text, const cha
     return sh;
 }
 
-static GLuint link(GLuint vs, GLuint fs, const char *vert, const char *frag)
+/* The stages (0 where one failed to compile: nothing is linked) into one program; `what` names it. */
+static GLuint link(const GLuint *stages, int count, const char *what)
 {
-    if (!vs || !fs) {
-        glDeleteShader(vs);
-        glDeleteShader(fs);
-        return 0;
+    bool compiled = true;
+    for (int i = 0; i < count; i++)
+        compiled = compiled && stages[i];
+    GLuint p = compiled ? glCreateProgram() : 0;
+    for (int i = 0; i < count; i++) {
+        if (p)
+            glAttachShader(p, stages[i]);
+        glDeleteShader(stages[i]);
     }
-    GLuint p = glCreateProgram();
-    glAttachShader(p, vs);
-    glAttachShader(p, fs);
+    if (!p)
+        return 0;
     glLinkProgram(p);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
     GLint ok = 0;
     glGetProgramiv(p, GL_LINK_STATUS, &ok);
     if (!ok) {
         char log[4096];
         glGetProgramInfoLog(p, sizeof log, NULL, log);
-        log_error("linking %s + %s failed: %s", vert, frag, log);
+        log_error("linking %s failed: %s", what, log);
         glDeleteProgram(p);
         return 0;
     }
     state.live_objects++;
     return p;
+}
+
+/* "a + b", for link's messages. */
+static const char *pair_name(const char *a, const char *b, char *out, size_t size)
+{
+    snprintf(out, size, "%s + %s", a, b);
+    return out;
 }
 
 GLuint gl_program_load(const char *vert, const char *frag, const char *defines)
 {
     GLuint vs = compile(GL_VERTEX_SHADER, vert, NULL, defines);
-    GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, frag, NULL, defines) : 0;
-    return link(vs, fs, vert, frag);
+    const GLuint stages[2] = {vs, vs ? compile(GL_FRAGMENT_SHADER, frag, NULL, defines) : 0};
+    char what[400];
+    return link(stages, 2, pair_name(vert, frag, what, sizeof what));
 }
 
 GLuint gl_compute_program_load(const char *comp, const char *defines)
 {
-    GLuint cs = compile(GL_COMPUTE_SHADER, comp, NULL, defines);
-    if (!cs)
-        return 0;
-    GLuint p = glCreateProgram();
-    glAttachShader(p, cs);
-    glLinkProgram(p);
-    glDeleteShader(cs);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[4096];
-        glGetProgramInfoLog(p, sizeof log, NULL, log);
-        log_error("linking %s failed: %s", comp, log);
-        glDeleteProgram(p);
-        return 0;
-    }
-    state.live_objects++;
-    return p;
+    const GLuint stage = compile(GL_COMPUTE_SHADER, comp, NULL, defines);
+    return link(&stage, 1, comp);
 }
 
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines)
@@ -275,8 +269,9 @@ GLuint gl_program_create(const char *name, const char *vert_text, const char *fr
     snprintf(vname, sizeof vname, "%s (vertex)", name);
     snprintf(fname, sizeof fname, "%s (fragment)", name);
     GLuint vs = compile(GL_VERTEX_SHADER, vname, vert_text, defines);
-    GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, fname, frag_text, defines) : 0;
-    return link(vs, fs, vname, fname);
+    const GLuint stages[2] = {vs, vs ? compile(GL_FRAGMENT_SHADER, fname, frag_text, defines) : 0};
+    char what[400];
+    return link(stages, 2, pair_name(vname, fname, what, sizeof what));
 }
 
 void gl_program_destroy(GLuint *program)
