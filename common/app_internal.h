@@ -35,6 +35,18 @@ void app_hooks_after_frame(app_hooks *h, bool minimised);
 int app_hooks_check(const app_hooks *h, const app *a, const cli_options *opt);
 void app_bench_print(const app *a, double *ms, double *pass_ms, int n);
 
+/* The command line's other consequences (app_options.c):
+ *   app_print_gl_info(opt, program)     --gl-info: key=value lines about the context; an exit code
+ *   app_check_size_limits(w, h)         false (logged) when the context cannot make a w x h target
+ *   app_apply_camera(scene, given)      --camera's attributes over the scene's camera (parsed as a
+ *                                       scene's camera line); false (logged) when they are wrong
+ *   app_with_forward_plus(list, out, capacity)
+ *                                       `list` with forward-plus after forward (in out), or list */
+int app_print_gl_info(const cli_options *opt, const char *program);
+bool app_check_size_limits(int width, int height);
+bool app_apply_camera(scene *s, const char *given);
+const char *const *app_with_forward_plus(const char *const *list, const char **out, int capacity);
+
 /* The learner's window (app_window.c):
  *   app_window_create(w, a, opt) / app_window_destroy(w) / app_window_resize(w, a)
  *   app_window_move(w, a, dt)          mouse and held keys to the camera
