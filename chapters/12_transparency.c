@@ -1,28 +1,33 @@
 /* 12_transparency.c - glass: objects whose material has an opacity below 1 are shaded FORWARD after
- * the deferred frame, back to front, and blended over it. Compare with chapter 07, whose frame this
- * chapter keeps for the opaque objects, and with chapter 00, which draws the glass the same way.
+ * the deferred frame, back to front, and blended over it, lit by the SAME cluster lists the deferred
+ * pass used. Compare with chapter 11, whose clustered deferred frame this chapter keeps for the
+ * opaque objects, and with chapter 00, which draws the glass the same way with per-object lists.
  *
  * The G-buffer holds one surface per pixel: the glass would hide what lies behind it, and the
  * lighting pass could not light both. So the glass stays out of it (gpu_scene_draw draws the opaque
- * objects only) and, after the lighting pass, before the present pass:
- *   the glass pass: every transparent object, shaded by forward.frag (TRANSPARENT: linear radiance,
- *     the opacity A in alpha) with its per-object light list (forward_build_light_lists, chapter 00),
- *     blended into the accumulation buffer, final = A * shaded + (1 - A) * behind, in LINEAR radiance,
- *     as chapter 00 now blends into a float buffer too; the present pass display-encodes the result;
- *   its state (glass_back_pass, glass_front_pass): blending {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA},
- *     the depth test against the G-buffer's depth (the opaque surfaces hide glass behind them), no
- *     depth writes (glass must not hide glass);
- *   the order: back to front, by the distance of each object's bounding-sphere centre from the eye
- *     (gpu_scene sorts every frame), and within an object its back faces (culling GL_FRONT: its far
- *     side) before its front faces (GL_BACK: its near side). Right for convex objects that do not
- *     intersect; --sort none draws them in the scene file's order, which is wrong where they overlap.
+ * objects only), and the frame gains a linear-radiance target and two passes:
+ *   the accumulation target: RGBA32F, sharing the G-buffer's depth; chapter 11's lighting pass writes
+ *     linear radiance into it (CLUSTERS_VIEW_LINEAR) instead of display values into the window;
+ *   the glass pass: every transparent object, shaded by forward_plus.frag (TRANSPARENT: linear
+ *     radiance, the opacity A in alpha), each fragment looping over ITS cluster's lights (its own
+ *     view depth picks the slice: the lists cover the whole frustum, not only the opaque surfaces),
+ *     blended final = A * shaded + (1 - A) * behind in LINEAR radiance, as chapter 00 blends into a
+ *     float buffer too;
+ *   the present pass: the blended radiance display-encoded once (accum_present.frag, chapter 06).
+ * The glass state (glass_back_pass, glass_front_pass): blending {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA},
+ * the depth test against the G-buffer's depth (the opaque surfaces hide glass behind them), no depth
+ * writes (glass must not hide glass). The order: back to front, by the distance of each object's
+ * bounding-sphere centre from the eye (gpu_scene sorts every frame), and within an object its back
+ * faces (culling GL_FRONT: its far side) before its front faces (GL_BACK: its near side). Right for
+ * convex objects that do not intersect; --sort none draws them in the scene file's order, which is
+ * wrong where they overlap.
  * Views: lit; overdraw, the glass fragments per pixel as a heat map (the layers each pixel blends);
- * opaque, the deferred frame alone (what the other deferred chapters show of a scene with glass).
+ * opaque, the deferred frame alone (chapter 11's picture of a scene with glass).
  * Read docs/12_transparency.md alongside.
  */
 #include "app.h"
+#include "clusters.h"
 #include "debug_views.h"
-#include "deferred_volumes.h"
 #include "gbuffer.h"
 #include "log.h"
 
@@ -35,7 +40,8 @@ static const char *const sorts[] = {"back-to-front", "none", NULL};
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
     .program = "12_transparency",
-    .summary = "Chapter 12: transparent objects shaded forward, back to front, over the deferred frame.",
+    .summary = "Chapter 12: transparent objects shaded forward with the cluster lists, back to front, over "
+               "the deferred frame.",
     .renderers = renderers,
     .views = views,
     .extras =
@@ -44,6 +50,9 @@ static const cli_desc cli = {
              "overlaps)", sorts, "back-to-front"},
         },
 };
+
+/* Chapter 11's lighting pass: every pixel written once; no blending, no depth test. */
+static const gl_pass_state lighting_pass = {.depth_write = false};
 
 /* The glass: blended over the linear radiance behind it (straight alpha: A * source + (1 - A) *
  * destination), depth-tested against the opaque surfaces, never writing depth. Each object twice:
@@ -64,62 +73,71 @@ static const gl_pass_state glass_front_pass = {
 
 static struct {
     gbuffer g;
-    deferred_volumes dv; /* the volumes, the accumulation buffer, the present pass (chapters 06-07) */
-    forward fwd;         /* the glass program and the per-object light lists (chapter 00) */
+    clusters c;          /* chapter 11's grid and lists */
+    fbo accum;           /* linear radiance; depth: the G-buffer's */
+    GLuint glass_program, present_program, query;
     debug_views views;   /* --view overdraw's count target and heat map */
     gpu_scene_order order;
 } state;
+
+/* The accumulation target at the G-buffer's size, on its depth texture. */
+static bool accum_follow_gbuffer(void)
+{
+    const gbuffer *g = &state.g;
+    if (state.accum.id && state.accum.depth == g->fbo.depth && state.accum.width == g->fbo.width &&
+        state.accum.height == g->fbo.height)
+        return true;
+    fbo_destroy(&state.accum);
+    const fbo_desc desc = {.color_formats = {GL_RGBA32F},
+                           .color_count = 1,
+                           .depth_format = GL_DEPTH_COMPONENT32F,
+                           .shared_depth = g->fbo.depth,
+                           .name = "linear radiance"};
+    return fbo_create(&state.accum, &desc, g->fbo.width, g->fbo.height);
+}
 
 static bool init(app *a)
 {
     state.order = strcmp(app_extra(a, "sort"), "none") == 0 ? GPU_SCENE_SCENE_ORDER : GPU_SCENE_BACK_TO_FRONT;
     a->pass_state = &glass_front_pass; /* the overlay shows it */
-    return gbuffer_create(&state.g, a->width, a->height) &&
-           deferred_volumes_create(&state.dv, &state.g, GL_RGBA16F) && forward_create(&state.fwd) &&
-           debug_views_create(&state.views);
+    state.glass_program = gl_program_load("forward.vert", "forward_plus.frag", "TRANSPARENT 1");
+    state.present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
+    state.query = gl_query_create();
+    return state.glass_program && state.present_program && gbuffer_create(&state.g, a->width, a->height) &&
+           accum_follow_gbuffer() && clusters_create(&state.c, NULL) && debug_views_create(&state.views);
 }
 
 static bool resize(app *a)
 {
-    return gbuffer_resize(&state.g, a->width, a->height) && deferred_volumes_resize(&state.dv, &state.g);
+    return gbuffer_resize(&state.g, a->width, a->height) && accum_follow_gbuffer();
 }
 
-/* 2. lighting: the opaque surfaces' ambient and light volumes, summed in the accumulation buffer
- * with chapter 07's volume state (renderers.c keeps it), without the present pass yet */
-static bool light_opaque(app *a)
+/* What the glass program reads: the lights, the objects (their opacity), chapter 11's lists and grid,
+ * and row 2 of the view matrix (cglm is column-major), which gives a fragment's view depth. */
+static void bind_glass(const gpu_scene *gs, GLuint p)
 {
-    light_volumes *lv = &state.dv.lv;
-    if (!deferred_volumes_resize(&state.dv, &state.g) || !light_volumes_sort(lv, &a->gs))
-        return false;
-    frame_timer_mark("lighting");
-    glBindFramebuffer(GL_FRAMEBUFFER, state.dv.accum.id);
-    glViewport(0, 0, state.dv.accum.width, state.dv.accum.height);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
-    light_volumes_draw_ambient(lv, &state.g, &a->gs);
-    light_volumes_bind(lv, &state.g, &a->gs, LIGHT_VOLUMES_VIEW_LIT);
-    light_volumes_draw(lv, &a->gs, &renderer_volume_pass);
-    return gl_check("12 lighting");
+    const mat4 *view = (const mat4 *)gs->view.view;
+    clusters_bind(&state.c, p, SHADER_UNIT_LIGHT_INDEX); /* and the unit after it; uses p */
+    gpu_scene_bind_lights(gs, p, SHADER_UNIT_LIGHTS);
+    gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS);
+    glUniform4f(glGetUniformLocation(p, "u_cluster_depth_row"), (*view)[0][2], (*view)[1][2], (*view)[2][2],
+                (*view)[3][2]);
+    glUniform3fv(glGetUniformLocation(p, "u_eye"), 1, gs->view.eye);
 }
 
 /* 3. the glass, into the framebuffer bound (it shares the G-buffer's depth): each transparent
- * object in state.order, with each of `passes` */
+ * object in state.order, with each of the two passes, its fragments lit by their clusters' lists */
 static bool draw_glass(app *a, const gl_pass_state *back, const gl_pass_state *front, bool overdraw)
 {
-    if (!forward_build_light_lists(&state.fwd, &a->gs))
-        return false;
+    frame_timer_mark("transparent");
+    GLuint p = state.glass_program;
+    bind_glass(&a->gs, p);
+    glUniform1i(glGetUniformLocation(p, "u_view_mode"), overdraw ? SHADER_VIEW_OVERDRAW : SHADER_VIEW_LIT);
     const gl_pass_state *const passes[] = {back, front};
-    const forward_glass glass = {
-        .passes = passes,
-        .pass_count = 2,
-        .order = state.order,
-        .light_lists = true,
-        .count_pixels = a->count_pixels,
-        .overdraw = overdraw,
-    };
-    if (!forward_draw_transparent(&state.fwd, &a->gs, &glass))
-        return false;
-    a->shaded_pixels = forward_shaded_pixels(&state.fwd);
+    gl_samples_begin(state.query, a->count_pixels);
+    gpu_scene_draw_transparent(&a->gs, p, state.order, passes, 2);
+    a->shaded_pixels = gl_samples_end(state.query, a->count_pixels);
+    gl_pass_state_reset();
     return gl_check("12 glass");
 }
 
@@ -133,29 +151,49 @@ static bool draw_overdraw(app *a)
     return draw_glass(a, &back, &front, true) && debug_views_end_overdraw(&state.views, a->target.id);
 }
 
+/* 4. present: the blended radiance display-encoded, once, into the window's picture */
+static bool present(app *a)
+{
+    frame_timer_mark("present");
+    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
+    glViewport(0, 0, a->width, a->height);
+    glUseProgram(state.present_program);
+    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
+    glBindTexture(GL_TEXTURE_2D, state.accum.color[0]);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(glGetUniformLocation(state.present_program, "u_accum"), SHADER_UNIT_IMAGE);
+    glUniform1i(glGetUniformLocation(state.present_program, "u_tonemap"), SHADER_TONEMAP_NONE);
+    glUniform1i(glGetUniformLocation(state.present_program, "u_view"), SHADER_VIEW_LIT);
+    gl_draw_fullscreen();
+    return gl_check("12 present");
+}
+
 static bool frame(app *a)
 {
     if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
 
-    /* 1. geometry pass: the opaque objects only, and their depth */
-    if (!gbuffer_render(&state.g, &a->gs))
+    /* 1. geometry pass: the opaque objects only, and their depth; 2. light assignment (chapter 11) */
+    if (!gbuffer_render(&state.g, &a->gs) || !clusters_assign(&state.c, &a->gs))
         return false;
     if (app_view_is(a, "overdraw"))
         return draw_overdraw(a);
 
-    /* 2. lighting pass: the opaque surfaces, in linear radiance */
-    if (!light_opaque(a))
+    /* 3. lighting pass: the opaque surfaces, in linear radiance, into the accumulation target */
+    if (!accum_follow_gbuffer())
         return false;
+    glBindFramebuffer(GL_FRAMEBUFFER, state.accum.id);
+    glViewport(0, 0, state.accum.width, state.accum.height);
+    if (!clusters_shade_deferred(&state.c, &state.g, &a->gs, &lighting_pass, CLUSTERS_VIEW_LINEAR))
+        return false;
+    gl_pass_state_reset();
 
-    /* 3. glass pass: forward-shaded, back to front, blended over that radiance */
-    glBindFramebuffer(GL_FRAMEBUFFER, state.dv.accum.id);
+    /* 4. glass pass: forward-shaded, back to front, blended over that radiance */
     if (!app_view_is(a, "opaque") && !draw_glass(a, &glass_back_pass, &glass_front_pass, false))
         return false;
 
-    /* 4. present: the blended radiance display-encoded, once */
-    deferred_volumes_present(&state.dv, a->target.id, &(deferred_volumes_frame){0});
-    return gl_check("12 present");
+    /* 5. present */
+    return present(a);
 }
 
 static bool key(app *a, int k)
@@ -172,8 +210,11 @@ static void cleanup(app *a)
 {
     (void)a;
     debug_views_destroy(&state.views);
-    forward_destroy(&state.fwd);
-    deferred_volumes_destroy(&state.dv);
+    clusters_destroy(&state.c);
+    gl_query_destroy(&state.query);
+    gl_program_destroy(&state.present_program);
+    gl_program_destroy(&state.glass_program);
+    fbo_destroy(&state.accum);
     gbuffer_destroy(&state.g);
 }
 

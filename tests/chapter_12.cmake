@@ -2,10 +2,10 @@
 # pictures its page shows, the claim "this matches forward" with glass and without, that the order
 # matters, that the glass stays out of the G-buffer, and the hard cases (docs/12_transparency.md).
 #
-# Agreement bound: 1/255 on 99.99 % of pixels, as for chapter 07 (the same G-buffer, RGBA16F sum and
-# volume state; the glass is the same program, the same draws in the same order, blended in linear
-# radiance on both sides: into the RGBA16F sum here, into forward's RGBA32F frame there). Measured on
-# the glass scene at 320x240 and 640x480: max 1, on no pixel beyond it.
+# Agreement bound: 1/255 on 99.99 % of pixels, as for chapter 11 (the same G-buffer and cluster
+# lists; the glass is the same draws in the same order, blended in linear radiance on both sides: into
+# the RGBA32F target here, into forward's RGBA32F frame there; its lights come from its cluster's list
+# here and from its object's list there, and a light on neither list adds exactly 0).
 
 # debug_views.cmake's count test (that file is included after this one): the heat map read back.
 function(chapter_12_count_test name claim)
@@ -59,18 +59,21 @@ function(chapter_12_tests)
   set_tests_properties(agree.12_sort_none_differs PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
 
   # The glass is in no G-buffer: the glass scene is the default scene plus glass, and chapter 02's
-  # G-buffer views of both are the same bytes; chapter 07, which has no glass pass, draws the same
-  # frame for both; and chapter 12's opaque view is chapter 07's frame.
+  # G-buffer views of both are the same bytes; chapter 11, which has no glass pass, draws the same
+  # frame for both; and chapter 12's opaque view is chapter 11's frame, byte for byte (the lighting
+  # pass's linear radiance is stored as 32-bit floats, and the present pass applies the same
+  # display_encode to the same values).
   if(TARGET 02_mrt_gbuffer)
     foreach(view depth albedo normal specular)
       course_agreement_test(12_glass_not_in_gbuffer_${view} 0 0
         02_mrt_gbuffer --scene ${GLASS} --view ${view} VS 02_mrt_gbuffer --view ${view})
     endforeach()
   endif()
-  if(TARGET 07_face_culling)
-    course_agreement_test(12_chapter_07_draws_no_glass 0 0 07_face_culling --scene ${GLASS} VS 07_face_culling)
-    course_agreement_test(12_opaque_view_is_07 0 0 ${C} --scene ${GLASS} --view opaque VS 07_face_culling)
-    course_agreement_test(12_default_is_07 0 0 ${C} VS 07_face_culling)
+  if(TARGET 11_clustered)
+    course_agreement_test(12_chapter_11_draws_no_glass 0 0 11_clustered --scene ${GLASS} VS 11_clustered)
+    course_agreement_test(12_opaque_view_is_11 0 0 ${C} --scene ${GLASS} --view opaque VS 11_clustered)
+    course_agreement_test(12_default_is_11 0 0 ${C} VS 11_clustered)
+    course_agreement_test(12_default_is_11_lights1024 0 0 ${C} --lights 1024 VS 11_clustered --lights 1024)
   endif()
 
   # Chapter 00's optimisations still change nothing with glass (the pre-pass leaves it out; the
