@@ -1,5 +1,5 @@
 /* scene_parser.h - the parser state and the helpers that the scene parser's files share (internal:
- * only scene.c, scene_tokens.c and scene_directives.c include it; everyone else uses scene.h).
+ * only scene.c, scene_tokens.c, scene_directives.c and scene_lights.c include it; everyone else uses scene.h).
  *
  * scene_tokens.c:
  *   scene_parser_fail(p, fmt, ...)                       log "NAME:LINE: message"; returns false
@@ -18,6 +18,10 @@
  *                                                        read an attribute name: its index in names
  * scene_directives.c:
  *   scene_parser_run_directive(p)                        parse a tokenized line by its directive
+ * scene_lights.c:
+ *   scene_parser_parse_light(p), scene_parser_parse_spot(p), scene_parser_parse_key(p)
+ *                                                        the light, spot and key directives
+ *   scene_parser_start_keys(p, last)                     the key lines that follow animate `last`
  *
  * A take/expect/add/append/run function that fails (false, NULL or -1) has logged the one
  * message of the parse by then.
@@ -103,5 +107,9 @@ int scene_parser_take_attribute(parser *p, const char *what, const char *const n
                                 unsigned *seen);
 
 bool scene_parser_run_directive(parser *p);
+bool scene_parser_parse_light(parser *p);
+bool scene_parser_parse_spot(parser *p);
+bool scene_parser_parse_key(parser *p);
+void scene_parser_start_keys(parser *p, last_kind last);
 
 #endif

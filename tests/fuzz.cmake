@@ -29,7 +29,8 @@ if(COURSE_FUZZ)
   # The parser is compiled into the target (not linked from common_core) so that it carries
   # libFuzzer's coverage instrumentation too.
   set(COURSE_FUZZ_SOURCES_scene ${CMAKE_SOURCE_DIR}/common/scene.c ${CMAKE_SOURCE_DIR}/common/scene_tokens.c
-    ${CMAKE_SOURCE_DIR}/common/scene_directives.c ${CMAKE_SOURCE_DIR}/common/log.c)
+    ${CMAKE_SOURCE_DIR}/common/scene_directives.c ${CMAKE_SOURCE_DIR}/common/scene_lights.c
+    ${CMAKE_SOURCE_DIR}/common/log.c)
   set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/cli.c ${CMAKE_SOURCE_DIR}/common/keys.c
     ${CMAKE_SOURCE_DIR}/common/log.c)
   foreach(target ${COURSE_FUZZ_TARGETS})
