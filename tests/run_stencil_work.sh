@@ -15,15 +15,10 @@
 #      stencil reset (--reset off: stale counts are shaded again).
 # Exit 77 (no GL context) passes through as a skip.
 set -u
+. "$(dirname "$0")/work_lib.sh"
 bench=$1 chapter=$2 out=$3
 rm -rf "$out"
-mkdir -p "$out"
-"$bench" --scenes default,city --lights 1024,scene --renderers deferred-volumes,deferred-stencil \
-    --size 800x800 --frames 1 --warmup 0 --cutoffs 5 --cutoff-lights 64 --error-max-lights 0 --no-plots \
-    --out "$out" >"$out/stdout" 2>"$out/stderr"
-rc=$?
-[ $rc -eq 77 ] && { echo "skip: no GL context"; exit 77; }
-[ $rc -ne 0 ] && { echo "FAIL: bench exited $rc"; cat "$out/stderr"; exit 1; }
+work_bench "$bench" "$out" default,city 1024,scene deferred-volumes,deferred-stencil
 
 # CSV columns: 1 sweep, 2 scene, 3 renderer, 4 light_set, 5 lights, 17 shaded, 19 ideal, 21 ratio,
 # 24 max_abs_8bit, 25 mean_abs_8bit.
@@ -55,12 +50,8 @@ END {
     exit bad
 }' "$out/bench.csv" || exit 1
 
-want=$(awk -F, '$1 == "lights" && $2 == "default" && $3 == "deferred-stencil" && $5 == 1024 { print $17 }' "$out/bench.csv")
-shaded() {
-    "$chapter" --headless --size 800x800 --lights 1024 --frames 1 --bench "$@" |
-        sed -n 's/.*shaded_pixels=\([0-9-]*\).*/\1/p'
-}
-on=$(shaded) off=$(shaded --batch off) stale=$(shaded --reset off)
+want=$(work_csv "$out" default deferred-stencil 1024 17)
+on=$(work_count "$chapter") off=$(work_count "$chapter" --batch off) stale=$(work_count "$chapter" --reset off)
 echo "chapter 08, default, 1024 lights: shaded $on (batches), $off (one light per batch)," \
     "$stale (--reset off); the benchmark's renderer $want"
 [ -n "$want" ] && [ "$on" = "$want" ] || { echo "FAIL: the chapter shades $on, the benchmark's renderer $want"; exit 1; }

@@ -14,21 +14,11 @@
 #      count grows (the picture does not: agree.10_tile_lights_16_same_picture).
 # Exit 77 (no GL context) passes through as a skip.
 set -u
+. "$(dirname "$0")/work_lib.sh"
 bench=$1 chapter=$2 out=$3
 rm -rf "$out"
-mkdir -p "$out"
-extra=()
-"$bench" --help 2>&1 | grep -q -- '--gbuffer-sweep' && extra=(--gbuffer-sweep off)
-run_bench() { # DIR SCENES LIGHTS
-    "$bench" --scenes "$2" --lights "$3" --renderers deferred-volumes,deferred-tiled --size 800x800 --frames 1 \
-        --warmup 0 --cutoffs 5 --cutoff-lights 64 --error-max-lights 0 --no-plots "${extra[@]}" --out "$1" \
-        >"$1.stdout" 2>"$1.stderr"
-    local rc=$?
-    [ $rc -eq 77 ] && { echo "skip: no GL context"; exit 77; }
-    [ $rc -ne 0 ] && { echo "FAIL: bench exited $rc"; cat "$1.stderr"; exit 1; }
-}
-run_bench "$out/gpu" default,city 1024,scene
-COURSE_NO_COMPUTE=1 run_bench "$out/cpu" default 1024
+work_bench "$bench" "$out/gpu" default,city 1024,scene deferred-volumes,deferred-tiled
+COURSE_NO_COMPUTE=1 work_bench "$bench" "$out/cpu" default 1024 deferred-volumes,deferred-tiled
 
 # CSV columns: 1 sweep, 2 scene, 3 renderer, 4 light_set, 5 lights, 17 shaded (here: evaluations),
 # 19 ideal, 21 ratio.
@@ -46,15 +36,10 @@ $1 == "lights" && $3 == "deferred-volumes" {
 }
 END { if (checked != 4) fail(checked " tiled rows, want 4"); exit bad }' "$out/gpu/bench.csv" || exit 1
 
-bench_count() { # DIR: deferred-tiled's count on the default scene, 1024 lights
-    awk -F, '$1 == "lights" && $2 == "default" && $3 == "deferred-tiled" && $5 == 1024 { print $17 }' "$1/bench.csv"
-}
-count() { # ARGS...: the chapter's shaded_pixels (the light-loop iterations) on that frame
-    "$chapter" --headless --size 800x800 --lights 1024 --frames 1 --warmup 0 --bench "$@" |
-        sed -n 's/.*shaded_pixels=\([0-9-]*\).*/\1/p'
-}
-gpu_bench=$(bench_count "$out/gpu") cpu_bench=$(bench_count "$out/cpu")
-gpu=$(count --path compute) cpu=$(count --path cpu) limited=$(count --tile-lights 16)
+gpu_bench=$(work_csv "$out/gpu" default deferred-tiled 1024 17)
+cpu_bench=$(work_csv "$out/cpu" default deferred-tiled 1024 17)
+gpu=$(work_count "$chapter" --path compute) cpu=$(work_count "$chapter" --path cpu)
+limited=$(work_count "$chapter" --tile-lights 16)
 echo "default, 1024 lights: the chapter evaluates $gpu (compute path), $cpu (GL 3.3 path), $limited" \
     "(--tile-lights 16); the benchmark's renderer $gpu_bench (compute), $cpu_bench (COURSE_NO_COMPUTE=1)"
 [ -n "$gpu" ] && [ "$gpu" = "$gpu_bench" ] || { echo "FAIL: compute path: chapter $gpu, benchmark $gpu_bench"; exit 1; }
