@@ -36,10 +36,7 @@ function(chapter_08_tests)
                "time3|--time@3" "cutoff0|--cutoff@0"
                "cutoff0.1|--cutoff@0.1" "size200x300|--size@200x300" "culled|--scene@${S}/hard_culled.scene"
                "hdr1e6|--scene@${S}/hard_hdr1e6.scene" "degenerate|--scene@${S}/hard_degenerate.scene")
-    string(REPLACE "|" ";" parts "${case}")
-    list(GET parts 0 name)
-    list(GET parts 1 args)
-    string(REPLACE "@" ";" args "${args}")
+    course_case("${case}" name args)
     course_forward_agreement_test(08_vs_forward_${name} 1 0.0001 ${C} ${args})
   endforeach()
   # 64 and 1024 generated lights: as agree.07_vs_forward_lights64, a cut-off sphere through a pixel
@@ -97,15 +94,8 @@ function(chapter_08_tests)
   if(TARGET heat_count)
     foreach(case "default|" "lights64|--lights@64" "cutoff_0.1|--cutoff@0.1" "inside|--scene@${S}/inside_volume.scene"
                  "far_no_clamp|--scene@${S}/far_plane.scene@--depth-clamp@off" "one_per_light|--lights@64@--batch@off")
-      string(REPLACE "|" ";" parts "${case}")
-      list(GET parts 0 name)
-      list(GET parts 1 args)
-      string(REPLACE "@" ";" args "${args}")
-      add_test(NAME overdraw.08_sum_${name}
-        COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_overdraw_count.sh $<TARGET_FILE:heat_count>
-                ${COURSE_TEST_OUT}/overdraw_08_${name}.png lit-run -- $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} ${args}
-        WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-      set_tests_properties(overdraw.08_sum_${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+      course_case("${case}" name args)
+      course_overdraw_count_test(08_sum_${name} lit-run $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} ${args})
     endforeach()
   endif()
 

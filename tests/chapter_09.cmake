@@ -44,10 +44,7 @@ function(chapter_09_tests)
     VS 00_forward --scene ${SPOTS})
   foreach(case "spots|" "spots_time3|--time@3" "spots_time6|--time@6" "spots_cutoff0|--cutoff@0"
                "spots_cutoff0.3|--cutoff@0.3" "spots_windowed|--falloff@windowed" "spots_800|--size@800x600")
-    string(REPLACE "|" ";" parts "${case}")
-    list(GET parts 0 name)
-    list(GET parts 1 args)
-    string(REPLACE "@" ";" args "${args}")
+    course_case("${case}" name args)
     course_forward_agreement_test(09_vs_forward_${name} 1 0.0001 ${C} --scene ${SPOTS} ${args})
   endforeach()
   course_agreement_test(09_vs_forward_spots_as_spheres 1 0.0001

@@ -7,15 +7,6 @@
 # the RGBA32F target here, into forward's RGBA32F frame there; its lights come from its cluster's list
 # here and from its object's list there, and a light on neither list adds exactly 0).
 
-# debug_views.cmake's count test (that file is included after this one): the heat map read back.
-function(chapter_12_count_test name claim)
-  add_test(NAME overdraw.${name}
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_overdraw_count.sh $<TARGET_FILE:heat_count>
-            ${COURSE_TEST_OUT}/overdraw_${name}.png ${claim} -- ${ARGN}
-    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-  set_tests_properties(overdraw.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
-endfunction()
-
 function(chapter_12_tests)
   set(S ${CMAKE_SOURCE_DIR}/tests/scenes)
   set(GLASS ${CMAKE_SOURCE_DIR}/assets/scenes/glass.scene)
@@ -39,10 +30,7 @@ function(chapter_12_tests)
   foreach(case "glass|" "glass_time3|--time@3" "glass_behind|--camera@eye -4 3.5 -6 target 0.3 0.8 0"
                "glass_cutoff0|--cutoff@0" "glass_cutoff0.1|--cutoff@0.1" "glass_windowed|--falloff@windowed"
                "glass_800|--size@800x600")
-    string(REPLACE "|" ";" parts "${case}")
-    list(GET parts 0 name)
-    list(GET parts 1 args)
-    string(REPLACE "@" ";" args "${args}")
+    course_case("${case}" name args)
     course_forward_agreement_test(12_vs_forward_${name} 1 0.0001 ${C} --scene ${GLASS} ${args})
   endforeach()
   # 64 generated lights: the opaque part's cut-off steps as in agree.07_vs_forward_lights64 (the same
@@ -92,13 +80,10 @@ function(chapter_12_tests)
   if(TARGET heat_count)
     foreach(case "glass|--scene@${GLASS}" "inside|--scene@${S}/glass_inside.scene"
                  "same_depth|--scene@${S}/glass_same_depth.scene")
-      string(REPLACE "|" ";" parts "${case}")
-      list(GET parts 0 name)
-      list(GET parts 1 args)
-      string(REPLACE "@" ";" args "${args}")
-      chapter_12_count_test(12_sum_${name} lit-run $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} ${args})
+      course_case("${case}" name args)
+      course_overdraw_count_test(12_sum_${name} lit-run $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} ${args})
     endforeach()
-    chapter_12_count_test(12_other_scene_differs lit-run
+    course_overdraw_count_test(12_other_scene_differs lit-run
       $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} --scene ${GLASS} -- --scene ${S}/glass_inside.scene)
     set_tests_properties(overdraw.12_other_scene_differs PROPERTIES
       PASS_REGULAR_EXPRESSION "\\(expected sum [0-9]+\\) -> FAIL")

@@ -82,10 +82,7 @@ function(chapters_04_07_tests)
     foreach(case "time3|--time@3" "inside_volume|--scene@${S}/inside_volume.scene"
                  "far_plane|--scene@${S}/far_plane.scene" "near_plane|--scene@${S}/near_plane.scene"
                  "cutoff0|--cutoff@0" "size200x300|--size@200x300")
-      string(REPLACE "|" ";" parts "${case}")
-      list(GET parts 0 name)
-      list(GET parts 1 args)
-      string(REPLACE "@" ";" args "${args}")
+      course_case("${case}" name args)
       course_forward_agreement_test(07_vs_forward_${name} 1 0.0001 07_face_culling ${args})
     endforeach()
     # 64 generated lights put 64 cut-off spheres through the picture. Where a sphere passes through

@@ -5,14 +5,6 @@
 # count --bench prints as shaded_pixels: the picture is only right if every pixel's count is.
 # The lit views are unchanged: their goldens (chapters_01_03.cmake, chapters_04_07.cmake) still hold.
 
-function(debug_views_count_test name claim)
-  add_test(NAME overdraw.${name}
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_overdraw_count.sh $<TARGET_FILE:heat_count>
-            ${COURSE_TEST_OUT}/overdraw_${name}.png ${claim} -- ${ARGN}
-    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-  set_tests_properties(overdraw.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
-endfunction()
-
 function(debug_views_tests)
   if(NOT TARGET heat_count)
     return()
@@ -31,12 +23,12 @@ function(debug_views_tests)
     course_golden_test(03_fullscreen_phong_volumes 03_fullscreen_phong 1 0.0001 --view volumes --cutoff 0.3)
     # The loop evaluates every active light at every covered pixel, whatever the cut-off: 8 lights,
     # then 12 generated ones at a cut-off where most of them reach little.
-    debug_views_count_test(03_every_light loop $<TARGET_FILE:03_fullscreen_phong> ${COURSE_RENDER_ARGS})
-    debug_views_count_test(03_every_light_12 loop
+    course_overdraw_count_test(03_every_light loop $<TARGET_FILE:03_fullscreen_phong> ${COURSE_RENDER_ARGS})
+    course_overdraw_count_test(03_every_light_12 loop
       $<TARGET_FILE:03_fullscreen_phong> ${COURSE_RENDER_ARGS} --lights 12 --cutoff 0.1)
     # 20 lights: past the scale's end every covered pixel is the saturated colour, which
     # heat_count refuses to read as an exact count.
-    debug_views_count_test(03_saturates loop $<TARGET_FILE:03_fullscreen_phong> ${COURSE_RENDER_ARGS} --lights 20)
+    course_overdraw_count_test(03_saturates loop $<TARGET_FILE:03_fullscreen_phong> ${COURSE_RENDER_ARGS} --lights 20)
     set_tests_properties(overdraw.03_saturates PROPERTIES
       PASS_REGULAR_EXPRESSION "max=16 saturated=([1-9][0-9]*) unreadable=0 counts 0:[0-9]+ 16:[0-9]+ .*-> FAIL")
   endif()
@@ -46,8 +38,8 @@ function(debug_views_tests)
     course_golden_test(04_light_volumes_volumes 04_light_volumes 1 0.0001 --view volumes)
     # Chapter 04's lit pass discards outside the fixed radius after running: its own shaded_pixels
     # is smaller, so the heat map is checked against the counting pass (same faces, no depth test).
-    debug_views_count_test(04_sum same-run $<TARGET_FILE:04_light_volumes> ${COURSE_RENDER_ARGS})
-    debug_views_count_test(04_sum_unscaled same-run
+    course_overdraw_count_test(04_sum same-run $<TARGET_FILE:04_light_volumes> ${COURSE_RENDER_ARGS})
+    course_overdraw_count_test(04_sum_unscaled same-run
       $<TARGET_FILE:04_light_volumes> ${COURSE_RENDER_ARGS} --scale none --radius 2)
   endif()
 
@@ -55,14 +47,14 @@ function(debug_views_tests)
     course_golden_test(05_attenuation_radius_overdraw 05_attenuation_radius 1 0.0001
       --view overdraw --cutoff 0.3)
     # At 0.3 some volumes are finite, some cover the view (full-screen triangles): both counted.
-    debug_views_count_test(05_sum same-run $<TARGET_FILE:05_attenuation_radius> ${COURSE_RENDER_ARGS} --cutoff 0.3)
+    course_overdraw_count_test(05_sum same-run $<TARGET_FILE:05_attenuation_radius> ${COURSE_RENDER_ARGS} --cutoff 0.3)
   endif()
 
   if(TARGET 06_additive_blending)
     course_golden_test(06_additive_blending_overdraw 06_additive_blending 1 0.0001 --view overdraw --cutoff 0.1)
     # No depth test, no discard: every fragment of every back face runs, background included.
-    debug_views_count_test(06_sum lit-run $<TARGET_FILE:06_additive_blending> ${COURSE_RENDER_ARGS})
-    debug_views_count_test(06_sum_cutoff lit-run
+    course_overdraw_count_test(06_sum lit-run $<TARGET_FILE:06_additive_blending> ${COURSE_RENDER_ARGS})
+    course_overdraw_count_test(06_sum_cutoff lit-run
       $<TARGET_FILE:06_additive_blending> ${COURSE_RENDER_ARGS} --cutoff 0.1)
   endif()
 
@@ -73,14 +65,11 @@ function(debug_views_tests)
     foreach(case "default|" "cutoff_0.1|--cutoff@0.1" "cull_none|--cutoff@0.1@--cull@none"
                  "cull_back|--cutoff@0.1@--cull@back" "far_no_clamp|--scene@${S}/far_plane.scene@--depth-clamp@off"
                  "inside|--scene@${S}/inside_volume.scene")
-      string(REPLACE "|" ";" parts "${case}")
-      list(GET parts 0 name)
-      list(GET parts 1 args)
-      string(REPLACE "@" ";" args "${args}")
-      debug_views_count_test(07_sum_${name} lit-run $<TARGET_FILE:07_face_culling> ${COURSE_RENDER_ARGS} ${args})
+      course_case("${case}" name args)
+      course_overdraw_count_test(07_sum_${name} lit-run $<TARGET_FILE:07_face_culling> ${COURSE_RENDER_ARGS} ${args})
     endforeach()
     # The check is not vacuous: the picture of --cull none against the lit pass of --cull front.
-    debug_views_count_test(07_other_state_differs lit-run
+    course_overdraw_count_test(07_other_state_differs lit-run
       $<TARGET_FILE:07_face_culling> ${COURSE_RENDER_ARGS} --cutoff 0.1 --cull none -- --cull front)
     set_tests_properties(overdraw.07_other_state_differs PROPERTIES
       PASS_REGULAR_EXPRESSION "\\(expected sum [0-9]+\\) -> FAIL")

@@ -68,3 +68,22 @@ foreach(variant forward-naive forward-prepass forward-lists)
 endforeach()
 course_agreement_test(00_osmesa_vs_egl 1 0.0001
   00_forward VS 00_forward --headless=osmesa)
+
+# A case written "NAME|ARG@ARG@...": its name into name_var and its arguments, as a list, into
+# args_var (an argument with spaces, such as --camera's, stays one argument).
+macro(course_case case name_var args_var)
+  string(REPLACE "|" ";" _course_case_parts "${case}")
+  list(GET _course_case_parts 0 ${name_var})
+  list(GET _course_case_parts 1 ${args_var})
+  string(REPLACE "@" ";" ${args_var} "${${args_var}}")
+endmacro()
+
+# The heat map read back into counts and compared with the count the run claims
+# (tests/run_overdraw_count.sh: CLAIM is lit-run, loop, ...); ARGN: the program and its arguments.
+function(course_overdraw_count_test name claim)
+  add_test(NAME overdraw.${name}
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_overdraw_count.sh $<TARGET_FILE:heat_count>
+            ${COURSE_TEST_OUT}/overdraw_${name}.png ${claim} -- ${ARGN}
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(overdraw.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+endfunction()
