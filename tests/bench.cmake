@@ -2,6 +2,7 @@
 # Its helpers live in tools/bench/ so the tools/*.c glob does not make them separate programs.
 target_sources(bench PRIVATE
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_gbuffer.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_gbuffer_report.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_measure.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_options.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_plots.c

@@ -1,5 +1,6 @@
 /* bench_gbuffer.c - see bench_gbuffer.h. */
 #include "bench_gbuffer.h"
+#include "bench_gbuffer_rows.h"
 
 #include "bench_report.h"
 #include "bench_work.h"
@@ -18,41 +19,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define SCENES 2
-#define OTHER_SURFACE_DEG 5.0 /* a normal further off than this belongs to another surface */
 #define RAD_TO_DEG (180.0 / 3.14159265358979323846)
-
-static const char *const scene_names[SCENES] = {"default", "city"};
-static const char *const band_names[3] = {"near", "middle", "far"};
 
 typedef enum sweep_mode { SWEEP_ON, SWEEP_OFF, SWEEP_ONLY } sweep_mode;
 static sweep_mode mode = SWEEP_ON;
 
-/* One third of the covered pixels, by distance from the eye. */
-typedef struct band {
-    double distance;  /* the median distance of its pixels */
-    double mean, max; /* position error, scene units */
-} band;
-
-typedef struct layout_row {
-    bool measured;
-    char note[96];
-    int lights, frames;
-    double frame_ms, geometry_ms, lighting_ms;
-    double normal_max, normal_mean;
-    long covered, other_surface;
-    band bands[3];
-    image_stats vs_forward8; /* against forward at the same cut-off: what the layout alone costs */
-    bench_error vs_forward_hdr;
-    bool have_exact;    /* the exact reference is drawn up to --error-max-lights lights */
-    image_stats error8; /* against the exact reference (forward, fp32, cut-off 0) */
-    bench_error error_hdr;
-    image_stats vs_reference; /* 8-bit, tolerance 1, against the `reference` layout's picture */
-} layout_row;
-
-static layout_row rows[SCENES][GBUFFER_LAYOUT_COUNT];
-static bool scene_done[SCENES];
-static const char *pass_clock; /* frame_timer_clock() of the sweep's timers */
+bench_gbuffer_results bench_gbuffer_results_now;
+#define R bench_gbuffer_results_now
 
 /* ---- options ----------------------------------------------------------------------------------- */
 
@@ -439,7 +412,7 @@ static bool measure_layouts(sweep_gl *s, bench_renderers *br, const bench_measur
 static bool run_scene(const bench_options *o, int si, bench_renderers *br, bench_measure *m)
 {
     char path[SCENE_PATH_MAX], key[BENCH_KEY_LEN];
-    bench_options_find_scene(o, scene_names[si], path, sizeof path);
+    bench_options_find_scene(o, bench_gbuffer_scene_names[si], path, sizeof path);
     scene sc;
     if (!scene_load(path, &sc))
         return false;
@@ -450,207 +423,36 @@ static bool run_scene(const bench_options *o, int si, bench_renderers *br, bench
      * --error-max-lights: beyond, it is the slowest frame of all. */
     const bool exact = sc.light_count <= o->error_max_lights;
     if (ok) {
-        snprintf(key, sizeof key, "gbuffer/%s", scene_names[si]);
+        snprintf(key, sizeof key, "gbuffer/%s", bench_gbuffer_scene_names[si]);
         ok = sweep_create(&s, o->width, o->height) &&
              (!exact || bench_measure_make_reference(m, br, &gs, key, LIGHT_DEFAULT_CUTOFF)) &&
              gpu_scene_update(&gs, 0.0f, LIGHT_DEFAULT_CUTOFF, o->width, o->height) &&
-             time_layouts(&s, o, br, &gs, rows[si]) && measure_layouts(&s, br, m, exact, &gs, rows[si]);
-        pass_clock = frame_timer_clock(&s.timers[0]);
+             time_layouts(&s, o, br, &gs, R.rows[si]) && measure_layouts(&s, br, m, exact, &gs, R.rows[si]);
+        R.pass_clock = frame_timer_clock(&s.timers[0]);
         for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
-            rows[si][l].lights = sc.light_count;
-            if (ok && rows[si][l].measured)
+            R.rows[si][l].lights = sc.light_count;
+            if (ok && R.rows[si][l].measured)
                 fprintf(stderr, "bench: gbuffer %-8s %-14s %2d bytes %9.2f ms, normal max %.4f deg\n",
-                        scene_names[si], gbuffer_layouts[l].name,
-                        gbuffer_layout_bytes(&gbuffer_layouts[l], false), rows[si][l].frame_ms,
-                        rows[si][l].normal_max);
+                        bench_gbuffer_scene_names[si], gbuffer_layouts[l].name,
+                        gbuffer_layout_bytes(&gbuffer_layouts[l], false), R.rows[si][l].frame_ms,
+                        R.rows[si][l].normal_max);
         }
         sweep_destroy(&s);
         gpu_scene_destroy(&gs);
     }
     scene_destroy(&sc);
     bench_measure_forget_reference(m);
-    scene_done[si] = ok;
+    R.scene_done[si] = ok;
     return ok;
 }
 
 bool bench_gbuffer_run(const bench_state *st, bench_renderers *br, bench_measure *m)
 {
     double t0 = bench_measure_now_ms();
-    memset(rows, 0, sizeof rows);
-    memset(scene_done, 0, sizeof scene_done);
+    memset(&R, 0, sizeof R);
     for (int si = 0; si < SCENES; si++)
         if (!run_scene(&st->opt, si, br, m))
             return false;
     fprintf(stderr, "bench: G-buffer sweep in %.1f s\n", (bench_measure_now_ms() - t0) / 1000.0);
     return gl_check("bench_gbuffer_run");
-}
-
-/* ---- reports ----------------------------------------------------------------------------------- */
-
-static const char *format_name(GLenum f)
-{
-    switch (f) {
-    case GL_SRGB8_ALPHA8: return "SRGB8_ALPHA8";
-    case GL_RGBA8: return "RGBA8";
-    case GL_RGBA16F: return "RGBA16F";
-    case GL_RGBA16: return "RGBA16";
-    case GL_DEPTH24_STENCIL8: return "D24S8";
-    case GL_DEPTH_COMPONENT32F: return "D32F";
-    default: return "?";
-    }
-}
-
-static const char *depth_name(const gbuffer_layout *l)
-{
-    return l->depth == GBUFFER_DEPTH_D32F_REVERSED ? "D32F reversed"
-                                                   : format_name(gbuffer_layout_depth_format(l, false));
-}
-
-static const char *normal_name(int encoding)
-{
-    switch (encoding) {
-    case SHADER_GBUFFER_NORMAL_HALF: return "2 halves";
-    case SHADER_GBUFFER_NORMAL_BYTES: return "2x8 bits";
-    case SHADER_GBUFFER_NORMAL_PACKED: return "2x12 bits";
-    default: return "2x16 bits";
-    }
-}
-
-static void put(FILE *f, bool have, const char *fmt, double v)
-{
-    fputc(',', f);
-    if (have && isfinite(v))
-        fprintf(f, fmt, v);
-    else
-        fputs("NA", f);
-}
-
-bool bench_gbuffer_write_csv(const bench_state *st)
-{
-    char tmp[1024];
-    FILE *f = bench_report_open_tmp(st->opt.out_dir, "bench_gbuffer.csv", tmp, sizeof tmp);
-    if (!f)
-        return false;
-    fprintf(
-        f, "scene,lights,layout,default,bytes,bytes_with_stencil,albedo_format,normal_format,normal_encoding,"
-           "depth_format,width,height,frames,median_ms,geometry_ms,lighting_ms,normal_max_deg,"
-           "normal_mean_deg,covered_pixels,other_surface_pixels");
-    for (int b = 0; b < 3; b++)
-        fprintf(f, ",%s_distance,%s_mean_error,%s_max_error", band_names[b], band_names[b], band_names[b]);
-    fprintf(f, ",vs_forward_max_8bit,vs_forward_pixels_over_1,vs_forward_mean_8bit,vs_forward_max_hdr,"
-               "vs_forward_mean_hdr,max_abs_8bit,mean_abs_8bit,psnr_8bit,max_abs_hdr,mean_abs_hdr,psnr_hdr,"
-               "vs_reference_max_8bit,vs_reference_pixels_over_1,pass_clock,note\n");
-    for (int si = 0; si < SCENES; si++)
-        for (int l = 0; scene_done[si] && l < GBUFFER_LAYOUT_COUNT; l++) {
-            const layout_row *r = &rows[si][l];
-            const gbuffer_layout *g = &gbuffer_layouts[l];
-            bool m = r->measured;
-            fprintf(f, "%s,%d,%s,%s,%d,%d,%s,%s,%s,%s,%d,%d,%d", scene_names[si], r->lights, g->name,
-                    g == gbuffer_default_layout() ? "yes" : "no", gbuffer_layout_bytes(g, false),
-                    gbuffer_layout_bytes(g, true), format_name(g->albedo_format),
-                    format_name(g->normal_format), normal_name(g->normal_encoding), depth_name(g),
-                    st->opt.width, st->opt.height, r->frames);
-            put(f, m, "%.3f", r->frame_ms);
-            put(f, m, "%.3f", r->geometry_ms);
-            put(f, m, "%.3f", r->lighting_ms);
-            put(f, m, "%.6f", r->normal_max);
-            put(f, m, "%.6f", r->normal_mean);
-            put(f, m, "%.0f", (double)r->covered);
-            put(f, m, "%.0f", (double)r->other_surface);
-            for (int b = 0; b < 3; b++) {
-                put(f, m, "%.4g", r->bands[b].distance);
-                put(f, m, "%.4g", r->bands[b].mean);
-                put(f, m, "%.4g", r->bands[b].max);
-            }
-            put(f, m, "%.0f", r->vs_forward8.max_abs);
-            put(f, m, "%.0f", (double)r->vs_forward8.over);
-            put(f, m, "%.5f", r->vs_forward8.mean_abs);
-            put(f, m, "%.6g", r->vs_forward_hdr.max_abs);
-            put(f, m, "%.6g", r->vs_forward_hdr.mean_abs);
-            bool x = m && r->have_exact;
-            put(f, x, "%.0f", r->error8.max_abs);
-            put(f, x, "%.5f", r->error8.mean_abs);
-            put(f, x, "%.2f", r->error8.psnr);
-            put(f, x, "%.6g", r->error_hdr.max_abs);
-            put(f, x, "%.6g", r->error_hdr.mean_abs);
-            put(f, x, "%.2f", r->error_hdr.psnr);
-            put(f, m, "%.0f", r->vs_reference.max_abs);
-            put(f, m, "%.0f", (double)r->vs_reference.over);
-            fprintf(f, ",%s,%s\n", pass_clock ? pass_clock : "NA", r->note);
-        }
-    return bench_report_close_tmp(f, tmp, st->opt.out_dir, "bench_gbuffer.csv");
-}
-
-static void write_layout_table(FILE *f)
-{
-    fprintf(f, "| layout | RT0 (albedo) | RT1 (normal) | depth | bytes | with stencil | loses |\n"
-               "|---|---|---|---|---|---|---|\n");
-    for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
-        const gbuffer_layout *g = &gbuffer_layouts[l];
-        fprintf(f, "| %s%s | %s | %s, %s | %s | %d | %d | %s |\n", g->name,
-                g == gbuffer_default_layout() ? " (default)" : "", format_name(g->albedo_format),
-                format_name(g->normal_format), normal_name(g->normal_encoding), depth_name(g),
-                gbuffer_layout_bytes(g, false), gbuffer_layout_bytes(g, true), g->loses);
-    }
-    fprintf(f, "\n");
-}
-
-void bench_gbuffer_write_md(FILE *f, const bench_state *st)
-{
-    const bench_options *o = &st->opt;
-    fprintf(f,
-            "\n## G-buffer layouts\n\n"
-            "Chapter 07's frame (deferred-volumes, cut-off 5/256) with every layout of common/gbuffer.h, "
-            "on each scene with its own lights, %dx%d; %d warm-up + %d timed frames per layout, layouts "
-            "interleaved frame by frame; passes on the %s clock. Normal: angle between the decoded normal "
-            "and the geometry pass's float normal. Position: distance between the position rebuilt from "
-            "depth and the interpolated float position, mean / max in scene units, over the nearest, "
-            "middle and farthest third of the covered pixels (their median distance from the eye in "
-            "brackets). Other surface: pixels where the layout's depth let another surface win (normal "
-            "more than %.0f° off), left out of the normal and position columns. Picture: against chapter "
-            "00's forward renderer at the same cut-off (what the storage alone costs: the agreement tests' "
-            "measure), the exact reference (forward, fp32, cut-off 0; up to %d lights, NA beyond) and the "
-            "`reference` layout's picture (largest 8-bit difference, pixels more than 1/255 apart).\n\n",
-            o->width, o->height, o->warmup > 0 ? o->warmup : 1, o->frames, pass_clock ? pass_clock : "frame",
-            OTHER_SURFACE_DEG, o->error_max_lights);
-    write_layout_table(f);
-    fprintf(f, "| scene | layout | bytes | frame ms | geometry ms | lighting ms | normal max° | "
-               "normal mean° |");
-    for (int b = 0; b < 3; b++)
-        fprintf(f, " position, %s third |", band_names[b]);
-    fprintf(f, " other surface |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-    for (int si = 0; si < SCENES; si++)
-        for (int l = 0; scene_done[si] && l < GBUFFER_LAYOUT_COUNT; l++) {
-            const layout_row *r = &rows[si][l];
-            if (!r->measured) {
-                fprintf(f, "| %s | %s | – | %s | | | | | | | | |\n", scene_names[si], gbuffer_layouts[l].name,
-                        r->note);
-                continue;
-            }
-            fprintf(f, "| %s | %s | %d | %.1f | %.1f | %.1f | %.4f | %.4f |", scene_names[si],
-                    gbuffer_layouts[l].name, gbuffer_layout_bytes(&gbuffer_layouts[l], false), r->frame_ms,
-                    r->geometry_ms, r->lighting_ms, r->normal_max, r->normal_mean);
-            for (int b = 0; b < 3; b++)
-                fprintf(f, " %.2g / %.2g (%.3g) |", r->bands[b].mean, r->bands[b].max, r->bands[b].distance);
-            fprintf(f, " %ld |\n", r->other_surface);
-        }
-    fprintf(f, "\n| scene | layout | vs forward: max 8-bit, pixels > 1 | mean 8-bit | max HDR | mean HDR | "
-               "vs exact: mean 8-bit | PSNR 8-bit dB | mean HDR | PSNR HDR dB | vs reference layout: max, "
-               "pixels > 1 |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-    for (int si = 0; si < SCENES; si++)
-        for (int l = 0; scene_done[si] && l < GBUFFER_LAYOUT_COUNT; l++) {
-            const layout_row *r = &rows[si][l];
-            if (!r->measured)
-                continue;
-            fprintf(f, "| %s | %s | %d, %ld | %.4f | %.3g | %.3g |", scene_names[si], gbuffer_layouts[l].name,
-                    r->vs_forward8.max_abs, r->vs_forward8.over, r->vs_forward8.mean_abs,
-                    r->vs_forward_hdr.max_abs, r->vs_forward_hdr.mean_abs);
-            if (r->have_exact)
-                fprintf(f, " %.4f | %.1f | %.3g | %.1f |", r->error8.mean_abs, r->error8.psnr,
-                        r->error_hdr.mean_abs, r->error_hdr.psnr);
-            else
-                fprintf(f, " NA | NA | NA | NA |");
-            fprintf(f, " %d, %ld |\n", r->vs_reference.max_abs, r->vs_reference.over);
-        }
-    fprintf(f, "\n");
 }
