@@ -17,19 +17,16 @@
  *     (tile_depth_bounds.frag reads the tile's pixels), read back; the CPU puts each light into the
  *     tiles of its screen rectangle that it reaches and uploads the lists as texture buffers
  * Both lists are in light order and never leave out a light that reaches a pixel of the tile; a
- * light that reaches none adds exactly 0, so both paths draw the same picture, byte for byte.
- * --tile-lights N: the most entries a tile's list holds (default: every light). A tile with more
- * loops over every light instead: slower, never wrong. --view overdraw: the light-loop iterations
- * per pixel (--bench: their total is shaded_pixels); --view tiles: each tile's list length, with
- * the tile grid. Read docs/10_tiled_deferred.md alongside.
+ * light that reaches none adds exactly 0, so both paths draw the same picture, byte for byte (the L
+ * key switches between them). --tile-lights N: a tile with more lights loops over every light
+ * (slower, never wrong). --view overdraw: the light-loop iterations per pixel; --view tiles: each
+ * tile's list length. Read docs/10_tiled_deferred.md alongside.
  */
 #include "app.h"
 #include "gbuffer.h"
 #include "light_batches.h"
-#include "log.h"
 
 #include <stdlib.h>
-#include <string.h>
 
 enum { TILE_SIZE = 16, VIEW_TILES = 3 }; /* VIEW_TILES: a u_view_mode beside SHADER_VIEW_* */
 #define TILED_DEFINES "TILE_SIZE 16\nVIEW_TILES 3"
@@ -73,14 +70,8 @@ static struct {
     renderer_tile_frustum *frustums; /* cpu: per tile */
     int *ranges, *list;     /* cpu: what goes into range_buffer and list_buffer */
 } state;
-
-/* The view uniforms of both culling programs (tiled_cull.comp, tile_depth_bounds.frag). */
-static void bind_view(GLuint p, const frame_view *v)
-{
-    glUniformMatrix4fv(glGetUniformLocation(p, "u_view_matrix"), 1, GL_FALSE, (const float *)v->view);
-    glUniformMatrix4fv(glGetUniformLocation(p, "u_proj"), 1, GL_FALSE, (const float *)v->proj);
-    glUniformMatrix4fv(glGetUniformLocation(p, "u_inv_proj"), 1, GL_FALSE, (const float *)v->inv_proj);
-}
+static GLuint *const buffers[] = {&state.list_buffer, &state.range_buffer, &state.sphere_buffer};
+static GLuint *const textures[] = {&state.list_texture, &state.range_texture, &state.sphere_texture};
 
 /* Tiles for the target's size, and room for `lights` lights in every tile's list (unless
  * --tile-lights, or the largest texture buffer, says fewer: such a tile loops over every light). */
@@ -131,14 +122,13 @@ static bool light_spheres(const gpu_scene *gs)
 static bool cull_compute(app *a)
 {
     frame_timer_mark("tile culling");
+    if (!state.cull_program && !(state.cull_program = gl_compute_program_load("tiled_cull.comp", TILED_DEFINES)))
+        return false;
     GLuint p = state.cull_program;
     glUseProgram(p);
     gbuffer_bind_textures(&state.g, &a->gs, p, SHADER_UNIT_GBUFFER);
-    bind_view(p, &a->gs.view);
-    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_LIGHTS);
-    glBindTexture(GL_TEXTURE_BUFFER, state.sphere_texture);
-    glActiveTexture(GL_TEXTURE0);
-    glUniform1i(glGetUniformLocation(p, "u_light_spheres"), SHADER_UNIT_LIGHTS);
+    renderer_tile_bind_view(p, &a->gs.view);
+    gl_texture_buffer_bind(p, "u_light_spheres", SHADER_UNIT_LIGHTS, state.sphere_texture);
     glUniform1i(glGetUniformLocation(p, "u_light_count"), a->gs.light_count);
     glUniform1i(glGetUniformLocation(p, "u_tile_capacity"), state.capacity);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, state.list_buffer);
@@ -158,7 +148,7 @@ static bool depth_bounds_reduce(app *a)
     gl_pass_state_apply(&shading_pass);
     glUseProgram(state.bounds_program);
     gbuffer_bind_textures(&state.g, &a->gs, state.bounds_program, SHADER_UNIT_GBUFFER);
-    bind_view(state.bounds_program, &a->gs.view);
+    renderer_tile_bind_view(state.bounds_program, &a->gs.view);
     gl_draw_fullscreen();
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, state.tiles_x, state.tiles_y, GL_RGBA, GL_FLOAT, state.tile_bounds);
@@ -177,10 +167,7 @@ static bool cull_cpu(app *a)
     int tiles = state.tiles_x * state.tiles_y, entries = 0;
     for (int t = 0; t < tiles; t++) {
         int x = t % state.tiles_x * TILE_SIZE, y = t / state.tiles_x * TILE_SIZE;
-        float rect[4] = {(float)x, (float)y, glm_min(x + TILE_SIZE, v->width), glm_min(y + TILE_SIZE, v->height)};
-        for (int k = 0; k < 4; k++)
-            rect[k] = rect[k] / (float)(k % 2 ? v->height : v->width) * 2.0f - 1.0f;
-        renderer_tile_frustum_make(v, rect, &state.tile_bounds[4 * t], &state.frustums[t]);
+        renderer_tile_frustum_make(v, x, y, TILE_SIZE, &state.tile_bounds[4 * t], &state.frustums[t]);
         int *range = &state.ranges[4 * t];
         range[0] = range[1] = range[3] = 0, range[2] = (int)state.tile_bounds[4 * t + 2];
     }
@@ -229,13 +216,8 @@ static bool shade(app *a)
     glUseProgram(p);
     gpu_scene_bind_lights(&a->gs, p, SHADER_UNIT_LIGHTS);
     gbuffer_bind_textures(&state.g, &a->gs, p, SHADER_UNIT_GBUFFER);
-    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_LIGHT_LIST);
-    glBindTexture(GL_TEXTURE_BUFFER, state.list_texture);
-    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_LIGHT_INDEX);
-    glBindTexture(GL_TEXTURE_BUFFER, state.range_texture);
-    glActiveTexture(GL_TEXTURE0);
-    glUniform1i(glGetUniformLocation(p, "u_tile_lights"), SHADER_UNIT_LIGHT_LIST);
-    glUniform1i(glGetUniformLocation(p, "u_tile_ranges"), SHADER_UNIT_LIGHT_INDEX);
+    gl_texture_buffer_bind(p, "u_tile_lights", SHADER_UNIT_LIGHT_LIST, state.list_texture);
+    gl_texture_buffer_bind(p, "u_tile_ranges", SHADER_UNIT_LIGHT_INDEX, state.range_texture);
     glUniform1i(glGetUniformLocation(p, "u_tiles_x"), state.tiles_x);
     int mode = app_view_is(a, "overdraw") ? SHADER_VIEW_OVERDRAW : app_view_is(a, "tiles") ? VIEW_TILES : SHADER_VIEW_LIT;
     glUniform1i(glGetUniformLocation(p, "u_view_mode"), mode);
@@ -248,11 +230,8 @@ static bool shade(app *a)
 static long light_evaluations(const app *a)
 {
     int tiles = state.tiles_x * state.tiles_y;
-    if (state.compute) {
-        glBindBuffer(GL_TEXTURE_BUFFER, state.range_buffer);
-        glGetBufferSubData(GL_TEXTURE_BUFFER, 0, (GLsizeiptr)tiles * 4 * (GLsizeiptr)sizeof(int), state.ranges);
-        glBindBuffer(GL_TEXTURE_BUFFER, 0);
-    }
+    if (state.compute) /* the compute shader's ranges, read back */
+        gl_buffer_read(state.range_buffer, (size_t)tiles * 4 * sizeof(int), state.ranges);
     long sum = 0;
     for (const int *r = state.ranges; r < state.ranges + 4 * tiles; r += 4)
         sum += (long)r[2] * (r[1] < 0 ? a->gs.light_count : r[1]);
@@ -261,28 +240,17 @@ static long light_evaluations(const app *a)
 
 static bool init(app *a)
 {
-    const char *path = app_extra(a, "path"), *limit = app_extra(a, "tile-lights");
-    if (limit && !cli_parse_int(limit, 1, 1 << 30, &state.tile_limit)) {
-        log_error("bad --tile-lights '%s': expected a whole number of lights, at least 1", limit);
+    double limit = 0;
+    if ((app_extra(a, "tile-lights") && !app_extra_number(a, "tile-lights", 1, 1 << 30, &limit)) ||
+        !app_extra_compute(a, "path", &state.compute))
         return false;
-    }
-    state.compute = path ? strcmp(path, "compute") == 0 : renderer_have_compute();
-    if (state.compute && !renderer_have_compute()) {
-        log_error("--path compute needs compute shaders (OpenGL 4.3), which this context %s: use --path cpu",
-                  GLAD_GL_VERSION_4_3 ? "has, hidden by COURSE_NO_COMPUTE" : "does not have");
-        return false;
-    }
+    state.tile_limit = (int)limit;
     a->pass_state = &shading_pass; /* the overlay shows it */
     state.shade_program = gl_program_load("fullscreen.vert", "tiled_shade.frag", TILED_DEFINES);
     state.bounds_program = gl_program_load("fullscreen.vert", "tile_depth_bounds.frag", TILED_DEFINES);
-    if (state.compute)
-        state.cull_program = gl_compute_program_load("tiled_cull.comp", TILED_DEFINES);
-    GLuint *buffers[] = {&state.list_buffer, &state.range_buffer, &state.sphere_buffer};
-    GLuint *textures[] = {&state.list_texture, &state.range_texture, &state.sphere_texture};
     for (int i = 0; i < 3; i++)
         *buffers[i] = gl_buffer_create(), *textures[i] = gl_texture_create();
-    return state.shade_program && state.bounds_program && (!state.compute || state.cull_program) &&
-           gbuffer_create(&state.g, a->width, a->height);
+    return state.shade_program && state.bounds_program && gbuffer_create(&state.g, a->width, a->height);
 }
 
 static bool resize(app *a) { return gbuffer_resize(&state.g, a->width, a->height); }
@@ -291,7 +259,6 @@ static bool frame(app *a)
 {
     if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
-
     /* 1. geometry pass */
     if (!gbuffer_render(&state.g, &a->gs) || !size_tiles(a, a->gs.light_count) || !light_spheres(&a->gs))
         return false;
@@ -304,16 +271,21 @@ static bool frame(app *a)
     return true;
 }
 
+/* L: the lists made by the compute shader or on the CPU; the picture stays the same. */
+static bool key(app *a, int k)
+{
+    (void)a;
+    if (k == 'L') /* then size_tiles again: the compute path's buffers hold every tile's whole list */
+        app_toggle_compute(&state.compute, "tile lists"), state.capacity = 0;
+    return k == 'L';
+}
+
 static void cleanup(app *a)
 {
     (void)a;
-    gl_program_destroy(&state.cull_program);
-    gl_program_destroy(&state.shade_program);
-    gl_program_destroy(&state.bounds_program);
-    GLuint *buffers[] = {&state.list_buffer, &state.range_buffer, &state.sphere_buffer};
-    GLuint *textures[] = {&state.list_texture, &state.range_texture, &state.sphere_texture};
+    GLuint *programs[] = {&state.cull_program, &state.shade_program, &state.bounds_program};
     for (int i = 0; i < 3; i++)
-        gl_buffer_destroy(buffers[i]), gl_texture_destroy(textures[i]);
+        gl_program_destroy(programs[i]), gl_buffer_destroy(buffers[i]), gl_texture_destroy(textures[i]);
     fbo_destroy(&state.bounds);
     gbuffer_destroy(&state.g);
     free(state.spheres), free(state.tile_bounds), free(state.frustums), free(state.ranges), free(state.list);
@@ -321,6 +293,7 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
+                           .key = key};
     return app_run(&desc, argc, argv);
 }

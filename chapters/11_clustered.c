@@ -12,9 +12,12 @@
  *   the grid: 32 x 32-pixel tiles times S slices; slice k holds view depths
  *     near * (far / near)^(k / S) .. near * (far / near)^((k + 1) / S), S chosen so that a cluster is
  *     about as deep as it is tall (175 on the default scene at 800 x 800)
- *   2. light assignment, on the CPU (GL 3.3): each light's bounding sphere (a spot's: the sphere
- *      around its cone) in view space, into every cluster whose box it reaches; per cluster (first,
- *      count) and the light indices, uploaded as two texture buffers
+ *   2. light assignment: each light's bounding sphere (a spot's: the sphere around its cone) in view
+ *      space, into every cluster whose box it reaches; per cluster (first, count) and the light
+ *      indices, in two texture buffers. --assign cpu (GL 3.3): made on the CPU and uploaded;
+ *      --assign compute (GL 4.3, common/cluster_assign_gpu.c): the CPU finds each light's slices
+ *      and tiles, compute passes test the clusters and write the lists, the same bit for bit
+ *      (--assign check compares them every frame); the L key switches
  *   3. shading: the fragment finds its cluster from gl_FragCoord and its view depth, and loops over
  *      that list calling shade_light(); written once, no blending
  * --cluster-lights N: the most entries a cluster's list holds; a cluster with more loops over every
@@ -26,8 +29,11 @@
 #include "clusters.h"
 #include "gbuffer.h"
 
+#include <string.h>
+
 static const char *const renderers[] = {"deferred", "forward-plus", "forward", NULL};
 static const char *const views[] = {"lit", "overdraw", "clusters", NULL};
+static const char *const assigns[] = {"compute", "cpu", "check", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
@@ -46,6 +52,11 @@ static const cli_desc cli = {
              "most lights a cluster's list holds; a cluster with more loops over all "
              "of them (default: no limit)",
              NULL, NULL},
+            {"assign", "WHERE",
+             "light lists made by compute shaders (GL 4.3) or on the CPU (GL 3.3); check: compute, "
+             "compared with the CPU's every frame (exit 1 at the first difference); default: compute "
+             "where the context has it",
+             assigns, NULL},
         },
 };
 
@@ -80,6 +91,10 @@ static bool init(app *a)
     if (!option_int(a, "tile", 1, 4096, &desc.tile_size) ||
         !option_int(a, "slices", 1, CLUSTER_MAX_SLICES, &desc.slices) ||
         !option_int(a, "cluster-lights", 1, 1 << 30, &desc.cluster_limit))
+        return false;
+    const char *assign = app_extra(a, "assign");
+    desc.check = assign && strcmp(assign, "check") == 0;
+    if (!app_extra_compute(a, "assign", &desc.compute))
         return false;
     a->pass_state = &deferred_pass; /* the overlay shows it */
     return gbuffer_create(&state.g, a->width, a->height) && clusters_create(&state.c, &desc);
@@ -137,6 +152,16 @@ static bool frame(app *a)
     return true;
 }
 
+/* L: the lists made by compute shaders or on the CPU; the picture stays the same. */
+static bool key(app *a, int k)
+{
+    (void)a;
+    if (k != 'L')
+        return false;
+    app_toggle_compute(&state.c.desc.compute, "light assignment");
+    return true;
+}
+
 static void cleanup(app *a)
 {
     (void)a;
@@ -146,6 +171,7 @@ static void cleanup(app *a)
 
 int main(int argc, char **argv)
 {
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+    const app_desc desc = {
+        .cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
     return app_run(&desc, argc, argv);
 }

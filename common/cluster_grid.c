@@ -169,6 +169,29 @@ static bool add_pair(cluster_lists *l, int *hits, int cluster, int light)
     return true;
 }
 
+bool cluster_grid_sphere_slices(const cluster_grid *g, const float s[4], float *r_out, int k[2])
+{
+    float r = safe_radius(s, s[3]), depth = -s[2];
+    *r_out = r;
+    if (depth + r < g->near_plane || depth - r > g->far_plane)
+        return false; /* wholly before the near plane or beyond the far plane: no visible surface */
+    k[0] = cluster_grid_slice(g, depth - r), k[1] = cluster_grid_slice(g, depth + r);
+    return true;
+}
+
+void cluster_grid_sphere_tiles(const cluster_grid *g, const float s[4], float r, int k, int tx[2], int ty[2])
+{
+    float depth = -s[2];
+    float d0 = fmaxf(cluster_grid_slice_depth(g, k), depth - r);
+    float d1 = fminf(cluster_grid_slice_depth(g, k + 1), depth + r);
+    if (k == g->slices - 1)
+        d1 = depth + r; /* the last slice also holds what rounds past the far plane */
+    if (d0 <= 0.0f)
+        d0 = g->near_plane;
+    tile_span(g, g->p00, g->p20, s[0] - r, s[0] + r, d0, d1, g->width, g->tiles_x, tx);
+    tile_span(g, g->p11, g->p21, s[1] - r, s[1] + r, d0, d1, g->height, g->tiles_y, ty);
+}
+
 /* One sphere into every cluster it can reach: per slice of its depth span, the tiles of its box's
  * screen rectangle there, each tested against the cluster's box. */
 static bool assign_sphere(cluster_lists *l, const cluster_grid *g, const float s[4], int light, int *hits)
@@ -180,24 +203,17 @@ static bool assign_sphere(cluster_lists *l, const cluster_grid *g, const float s
                 return false;
         return true;
     }
-    float r = safe_radius(s, s[3]), depth = -s[2];
-    if (depth + r < g->near_plane || depth - r > g->far_plane)
-        return true; /* wholly before the near plane or beyond the far plane: no visible surface */
-    int k0 = cluster_grid_slice(g, depth - r), k1 = cluster_grid_slice(g, depth + r);
-    for (int k = k0; k <= k1; k++) {
-        float d0 = fmaxf(cluster_grid_slice_depth(g, k), depth - r);
-        float d1 = fminf(cluster_grid_slice_depth(g, k + 1), depth + r);
-        if (k == g->slices - 1)
-            d1 = depth + r; /* the last slice also holds what rounds past the far plane */
-        if (d0 <= 0.0f)
-            d0 = g->near_plane;
+    float r;
+    int k[2];
+    if (!cluster_grid_sphere_slices(g, s, &r, k))
+        return true;
+    for (int slice = k[0]; slice <= k[1]; slice++) {
         int tx[2], ty[2];
-        tile_span(g, g->p00, g->p20, s[0] - r, s[0] + r, d0, d1, g->width, g->tiles_x, tx);
-        tile_span(g, g->p11, g->p21, s[1] - r, s[1] + r, d0, d1, g->height, g->tiles_y, ty);
+        cluster_grid_sphere_tiles(g, s, r, slice, tx, ty);
         for (int y = ty[0]; y <= ty[1]; y++) {
             for (int x = tx[0]; x <= tx[1]; x++) {
-                if (cluster_grid_sphere_touches(g, x, y, k, s, s[3]) &&
-                    !add_pair(l, hits, (k * g->tiles_y + y) * g->tiles_x + x, light))
+                if (cluster_grid_sphere_touches(g, x, y, slice, s, s[3]) &&
+                    !add_pair(l, hits, (slice * g->tiles_y + y) * g->tiles_x + x, light))
                     return false;
             }
         }
@@ -240,6 +256,21 @@ bool cluster_lists_assign(cluster_lists *l, const cluster_grid *g, const float (
     }
     l->entries = entries;
     return true;
+}
+
+int cluster_lists_first_difference(const cluster_lists *a, const cluster_lists *b)
+{
+    if (a->clusters != b->clusters)
+        return 0;
+    for (int c = 0; c < a->clusters; c++) {
+        const int *ra = &a->ranges[2 * c], *rb = &b->ranges[2 * c];
+        if (ra[0] != rb[0] || ra[1] != rb[1])
+            return c;
+        for (int i = 0; i < ra[1]; i++)
+            if (a->indices[ra[0] + i] != b->indices[rb[0] + i])
+                return c;
+    }
+    return -1;
 }
 
 void cluster_lists_destroy(cluster_lists *l)

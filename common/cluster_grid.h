@@ -26,6 +26,16 @@
  *                                         distance to the cluster's box is at most the radius
  *                                         (grown by 1e-4 of the distances involved, so that float
  *                                         rounding never drops a light); conservative, never exact
+ *   cluster_grid_sphere_slices(g, sphere, &r, k)
+ *                                         a finite view-space sphere's reach in depth: r its radius
+ *                                         grown as cluster_grid_sphere_touches grows it, k[0]..k[1]
+ *                                         the slices it may reach; false when it lies wholly before
+ *                                         the near plane or beyond the far plane (no cluster)
+ *   cluster_grid_sphere_tiles(g, sphere, r, k, tx, ty)
+ *                                         the tiles tx[0]..tx[1] x ty[0]..ty[1] of its screen
+ *                                         rectangle within slice k: the clusters worth testing there
+ *                                         (cluster_lists_assign and common/cluster_assign_gpu.c both
+ *                                         test exactly these, so their lists agree)
  *   cluster_light_bounds(position, direction, radius, cos_outer, out)
  *                                         a light's bounding sphere (xyz centre, w radius): a point
  *                                         light's own; a spot's, the smallest around its cone cut by
@@ -38,6 +48,9 @@
  *                                         order. A cluster reached by more than cluster_limit spheres
  *                                         (> 0; the list overflows) gets count -1 and no entries: its
  *                                         pixels loop over every light. false when out of memory
+ *   cluster_lists_first_difference(a, b)  the first cluster whose (first, count) or entries differ
+ *                                         between two sets of lists (or whose cluster counts do); -1
+ *                                         when they are the same
  *   cluster_lists_destroy(lists)
  */
 #ifndef COMMON_CLUSTER_GRID_H
@@ -78,10 +91,14 @@ int cluster_grid_count(const cluster_grid *g);
 void cluster_grid_box(const cluster_grid *g, int tx, int ty, int k, float lo[3], float hi[3]);
 bool cluster_grid_sphere_touches(const cluster_grid *g, int tx, int ty, int k, const float centre[3],
                                  float radius);
+bool cluster_grid_sphere_slices(const cluster_grid *g, const float sphere[4], float *r, int k[2]);
+void cluster_grid_sphere_tiles(const cluster_grid *g, const float sphere[4], float r, int k, int tx[2],
+                               int ty[2]);
 void cluster_light_bounds(const float position[3], const float direction[3], float radius, float cos_outer,
                           float out[4]);
 bool cluster_lists_assign(cluster_lists *lists, const cluster_grid *g, const float (*spheres)[4], int count,
                           int cluster_limit);
+int cluster_lists_first_difference(const cluster_lists *a, const cluster_lists *b);
 void cluster_lists_destroy(cluster_lists *lists);
 
 #endif

@@ -24,7 +24,7 @@ bool clusters_create(clusters *c, const clusters_desc *desc)
     c->range_texture = gl_texture_create();
     c->list_texture = gl_texture_create();
     c->evaluations = c->covered = -1;
-    return gl_check("clusters_create");
+    return cluster_assign_gpu_create(&c->gpu) && gl_check("clusters_create");
 }
 
 void clusters_destroy(clusters *c)
@@ -38,9 +38,25 @@ void clusters_destroy(clusters *c)
     gl_texture_destroy(&c->list_texture);
     fbo_destroy(&c->count_target);
     cluster_lists_destroy(&c->lists);
+    cluster_lists_destroy(&c->readback);
+    cluster_assign_gpu_destroy(&c->gpu);
     free(c->spheres);
     free(c->count_pixels);
     memset(c, 0, sizeof *c);
+}
+
+/* desc.check: the compute lists are the CPU's, or the first cluster where they are not, logged. */
+static bool lists_same(const clusters *c)
+{
+    int at = cluster_lists_first_difference(&c->lists, &c->readback);
+    if (at < 0)
+        return true;
+    const int *a = &c->lists.ranges[2 * at], *b = &c->readback.ranges[2 * at];
+    int k = at / (c->grid.tiles_x * c->grid.tiles_y), t = at % (c->grid.tiles_x * c->grid.tiles_y);
+    log_error("cluster %d (tile %d, %d, slice %d): the CPU's list (first %d, count %d) and the compute "
+              "passes' (first %d, count %d) differ",
+              at, t % c->grid.tiles_x, t / c->grid.tiles_x, k, a[0], a[1], b[0], b[1]);
+    return false;
 }
 
 bool clusters_assign(clusters *c, const gpu_scene *gs)
@@ -74,8 +90,17 @@ bool clusters_assign(clusters *c, const gpu_scene *gs)
     int limit = max_texels / count;
     if (c->desc.cluster_limit > 0 && c->desc.cluster_limit < limit)
         limit = c->desc.cluster_limit;
-    if (!cluster_lists_assign(&c->lists, &c->grid, (const float(*)[4])c->spheres, gs->light_count,
-                              limit > 0 ? limit : 1))
+    limit = limit > 0 ? limit : 1;
+    const float(*spheres)[4] = (const float(*)[4])c->spheres;
+    if (c->desc.compute) {
+        const cluster_assign_buffers out = {c->range_buffer, c->range_texture, c->list_buffer,
+                                            c->list_texture};
+        return cluster_assign_gpu_run(&c->gpu, &c->grid, spheres, gs->light_count, limit, &out) &&
+               (!c->desc.check ||
+                (cluster_lists_assign(&c->lists, &c->grid, spheres, gs->light_count, limit) &&
+                 cluster_assign_gpu_read(&out, count, &c->readback) && lists_same(c)));
+    }
+    if (!cluster_lists_assign(&c->lists, &c->grid, spheres, gs->light_count, limit))
         return false;
     gl_texture_buffer_upload(c->range_buffer, c->range_texture, GL_RG32I, c->lists.ranges,
                              (size_t)count * 2 * sizeof(int));
@@ -88,13 +113,8 @@ void clusters_bind(const clusters *c, GLuint program, int first_unit)
 {
     const cluster_grid *g = &c->grid;
     glUseProgram(program);
-    glActiveTexture(GL_TEXTURE0 + (GLenum)first_unit);
-    glBindTexture(GL_TEXTURE_BUFFER, c->range_texture);
-    glActiveTexture(GL_TEXTURE0 + (GLenum)first_unit + 1);
-    glBindTexture(GL_TEXTURE_BUFFER, c->list_texture);
-    glActiveTexture(GL_TEXTURE0);
-    glUniform1i(glGetUniformLocation(program, "u_cluster_ranges"), first_unit);
-    glUniform1i(glGetUniformLocation(program, "u_cluster_lights"), first_unit + 1);
+    gl_texture_buffer_bind(program, "u_cluster_ranges", first_unit, c->range_texture);
+    gl_texture_buffer_bind(program, "u_cluster_lights", first_unit + 1, c->list_texture);
     glUniform3i(glGetUniformLocation(program, "u_cluster_grid"), g->tiles_x, g->tiles_y, g->slices);
     glUniform1i(glGetUniformLocation(program, "u_cluster_tile"), g->tile_size);
     glUniform2f(glGetUniformLocation(program, "u_cluster_slicing"), g->near_plane, g->log_scale);

@@ -1,11 +1,16 @@
-/* clusters.h - chapter 11's clustered shading: per-cluster light lists made on the CPU, and the two
- * renderers that read them, clustered deferred and clustered forward (Forward+).
+/* clusters.h - chapter 11's clustered shading: per-cluster light lists, made on the CPU or by compute
+ * shaders, and the two renderers that read them, clustered deferred and clustered forward (Forward+).
  *
  *   clusters_create(c, desc)          nothing drawn yet: buffers; the programs are built on first use
  *   clusters_destroy(c)
  *   clusters_assign(c, gs)            the grid for gs's view (cluster_grid.h), every light's bounding
- *                                     sphere in view space, their lists, uploaded as two texture
- *                                     buffers (ranges RG32I, indices R32I)
+ *                                     sphere in view space, their lists in two texture buffers
+ *                                     (ranges RG32I, indices R32I): made on the CPU and uploaded, or
+ *                                     with desc.compute made there by cluster_assign_gpu.h's compute
+ *                                     passes (GL 4.3: the caller checks); the same lists either way.
+ *                                     With desc.check, the compute lists are read back and compared
+ *                                     with the CPU's every frame: false, logging the first cluster
+ *                                     that differs
  *   clusters_bind(c, program, first_unit)
  *                                     u_cluster_ranges and u_cluster_lights on first_unit and
  *                                     first_unit + 1, and the grid uniforms of shaders/clusters.glsl
@@ -35,6 +40,7 @@
 #ifndef COMMON_CLUSTERS_H
 #define COMMON_CLUSTERS_H
 
+#include "cluster_assign_gpu.h"
 #include "cluster_grid.h"
 #include "fbo.h"
 #include "gbuffer.h"
@@ -51,6 +57,8 @@ typedef struct clusters_desc {
     int tile_size;     /* pixels; 0: CLUSTERS_TILE_SIZE */
     int slices;        /* 0: cubic clusters (cluster_grid_cubic_slices) */
     int cluster_limit; /* most entries a cluster's list holds (more: every light); 0: no limit */
+    bool compute;      /* the lists made by compute shaders (GL 4.3), not on the CPU */
+    bool check;        /* with compute: compare them with the CPU's every frame */
 } clusters_desc;
 
 #define CLUSTERS_TILE_SIZE 32
@@ -58,7 +66,9 @@ typedef struct clusters_desc {
 typedef struct clusters {
     clusters_desc desc;
     cluster_grid grid;
-    cluster_lists lists;
+    cluster_lists lists;    /* the CPU's lists */
+    cluster_lists readback; /* desc.check: the compute passes' lists, read back */
+    cluster_assign_gpu gpu;
     float (*spheres)[4]; /* per light, its bounding sphere in view space */
     int sphere_cap;
     GLuint range_buffer, range_texture, list_buffer, list_texture;

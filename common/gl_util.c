@@ -439,6 +439,21 @@ void gl_texture_buffer_upload(GLuint buffer, GLuint texture, GLenum format, cons
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 
+void gl_texture_buffer_bind(GLuint program, const char *uniform, int unit, GLuint texture)
+{
+    glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+    glBindTexture(GL_TEXTURE_BUFFER, texture);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(glGetUniformLocation(program, uniform), unit);
+}
+
+void gl_buffer_read(GLuint buffer, size_t bytes, void *out)
+{
+    glBindBuffer(GL_COPY_READ_BUFFER, buffer);
+    glGetBufferSubData(GL_COPY_READ_BUFFER, 0, (GLsizeiptr)bytes, out);
+    glBindBuffer(GL_COPY_READ_BUFFER, 0);
+}
+
 void gl_samples_begin(GLuint query, bool on)
 {
     if (on)

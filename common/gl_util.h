@@ -29,6 +29,10 @@
  *   gl_texture_buffer_upload(buffer, texture, format, data, bytes)
  *                                         fill `buffer` and attach it to the buffer texture
  *                                         `texture` as `format` (GL_R32I, GL_RGBA32F); unbinds both
+ *   gl_texture_buffer_bind(program, uniform, unit, texture)
+ *                                         the buffer texture on texture unit `unit`, and the
+ *                                         sampler `uniform` of `program` (in use) set to it
+ *   gl_buffer_read(buffer, bytes, out)    the first `bytes` of a buffer back into memory
  *   gl_samples_begin(query, on) / gl_samples_end(query, on)
  *                                         count the fragments that pass (GL_SAMPLES_PASSED) between
  *                                         the two; end returns the count, or -1 when `on` is false
@@ -84,6 +88,8 @@ typedef struct gl_pass_state {
 void gl_pass_state_apply(const gl_pass_state *state);
 void gl_pass_state_reset(void);
 void gl_texture_buffer_upload(GLuint buffer, GLuint texture, GLenum format, const void *data, size_t bytes);
+void gl_texture_buffer_bind(GLuint program, const char *uniform, int unit, GLuint texture);
+void gl_buffer_read(GLuint buffer, size_t bytes, void *out);
 void gl_samples_begin(GLuint query, bool on);
 long gl_samples_end(GLuint query, bool on);
 void gl_util_shutdown(void);

@@ -42,6 +42,8 @@ static const key_binding table[] = {
     {'B', "B", "08", KEY_ACTION_CHAPTER, "batches of lights whose rectangles do not overlap, or one light per pass"},
     {'X', "X", "08", KEY_ACTION_CHAPTER, "count where the depth test fails (right) or passes (wrong inside a volume)"},
     {'Z', "Z", "08", KEY_ACTION_CHAPTER, "depth clamp on / off"},
+    {'L', "L", "10", KEY_ACTION_CHAPTER, "tile lists made by the compute shader or on the CPU (as --path; same picture)"},
+    {'L', "L", "11", KEY_ACTION_CHAPTER, "light lists made by compute shaders or on the CPU (as --assign; same picture)"},
     {'O', "O", "12", KEY_ACTION_CHAPTER, "glass order: back to front, or the scene's (wrong)"},
 };
 

@@ -28,9 +28,13 @@ void renderer_tile_sphere(const gpu_light *l, const frame_view *view, vec4 out)
 
 /* Side plane k is +-(row axis - bound * row 3) of the projection (x_clip >= x0 w_clip, ...); the box
  * holds the corner rays (scaled to z = -1) at both depths. */
-void renderer_tile_frustum_make(const frame_view *v, const float rect[4], const float depth[2],
+void renderer_tile_frustum_make(const frame_view *v, int x, int y, int size, const float depth[2],
                                 renderer_tile_frustum *f)
 {
+    /* the tile's pixel rectangle, cut at the view's edge, in NDC */
+    float rect[4] = {(float)x, (float)y, glm_min(x + size, v->width), glm_min(y + size, v->height)};
+    for (int k = 0; k < 4; k++)
+        rect[k] = rect[k] / (float)(k % 2 ? v->height : v->width) * 2.0f - 1.0f;
     glm_vec3_broadcast(3.0e38f, f->lo);
     glm_vec3_broadcast(-3.0e38f, f->hi);
     for (int k = 0; k < 4; k++) { /* x >= x0, x <= x1, y >= y0, y <= y1 */
@@ -132,7 +136,7 @@ bool ensure_tiled(renderer_set *r, const gpu_scene *gs)
     return gl_check("renderers: tiled");
 }
 
-static void tiled_bind_view(GLuint p, const frame_view *v)
+void renderer_tile_bind_view(GLuint p, const frame_view *v)
 {
     glUniformMatrix4fv(glGetUniformLocation(p, "u_view_matrix"), 1, GL_FALSE, (const float *)v->view);
     glUniformMatrix4fv(glGetUniformLocation(p, "u_proj"), 1, GL_FALSE, (const float *)v->proj);
@@ -157,7 +161,7 @@ static bool tiled_cull_compute(renderer_tiled *t, const gpu_scene *gs)
     GLuint p = t->cull_program;
     glUseProgram(p);
     gbuffer_bind_textures(&t->g, gs, p, SHADER_UNIT_GBUFFER);
-    tiled_bind_view(p, &gs->view);
+    renderer_tile_bind_view(p, &gs->view);
     glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_LIGHTS);
     glBindTexture(GL_TEXTURE_BUFFER, t->sphere_texture);
     glActiveTexture(GL_TEXTURE0);
@@ -179,7 +183,7 @@ static bool tiled_depth_bounds(renderer_tiled *t, const gpu_scene *gs)
     gl_pass_state_apply(&(gl_pass_state){0});
     glUseProgram(t->bounds_program);
     gbuffer_bind_textures(&t->g, gs, t->bounds_program, SHADER_UNIT_GBUFFER);
-    tiled_bind_view(t->bounds_program, &gs->view);
+    renderer_tile_bind_view(t->bounds_program, &gs->view);
     gl_draw_fullscreen();
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, t->tiles_x, t->tiles_y, GL_RGBA, GL_FLOAT, t->tile_bounds);
@@ -194,10 +198,7 @@ static bool tiled_cull_cpu(renderer_tiled *t, const gpu_scene *gs)
     int tiles = t->tiles_x * t->tiles_y, entries = 0;
     for (int k = 0; k < tiles; k++) {
         int x = k % t->tiles_x * TILE_SIZE, y = k / t->tiles_x * TILE_SIZE;
-        float rect[4] = {(float)x, (float)y, glm_min(x + TILE_SIZE, v->width), glm_min(y + TILE_SIZE, v->height)};
-        for (int j = 0; j < 4; j++)
-            rect[j] = rect[j] / (float)(j % 2 ? v->height : v->width) * 2.0f - 1.0f;
-        renderer_tile_frustum_make(v, rect, &t->tile_bounds[4 * k], &t->frustums[k]);
+        renderer_tile_frustum_make(v, x, y, TILE_SIZE, &t->tile_bounds[4 * k], &t->frustums[k]);
         int *range = &t->ranges[4 * k];
         range[0] = range[1] = range[3] = 0, range[2] = (int)t->tile_bounds[4 * k + 2];
     }

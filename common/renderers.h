@@ -16,13 +16,16 @@
  *                                            unless $COURSE_NO_COMPUTE is set: the tests run the GL
  *                                            3.3 paths on a newer driver that way
  *   renderer_tile_sphere(light, view, out)   chapter 10's culling, GL-free (the C twin of
- *   renderer_tile_frustum_make(view, rect, depth, f)          shaders/tiled_cull.glsl, for its GL 3.3
- *   renderer_tile_sphere_visible(f, sphere)                   path and deferred-tiled): a light's
+ *   renderer_tile_frustum_make(view, x, y, size, depth, f)    shaders/tiled_cull.glsl, for its GL
+ *   renderer_tile_sphere_visible(f, sphere)                   3.3 path and deferred-tiled): a light's
  *                                            bounding sphere in view space (a spot's around its cone),
  *                                            grown by 1e-4 of the distances for rounding; the piece of
- *                                            the view behind the tile whose pixels cover the NDC rect
- *                                            (x0, y0, x1, y1), its surfaces at view depths depth[0..1];
- *                                            whether the sphere can reach that piece (conservative)
+ *                                            the view behind the size x size pixel tile whose bottom
+ *                                            left pixel is (x, y) (cut at the view's edge), its
+ *                                            surfaces at view depths depth[0..1]; whether the sphere
+ *                                            can reach that piece (conservative)
+ *   renderer_tile_bind_view(program, view)   the view uniforms of chapter 10's two culling programs
+ *                                            (tiled_cull.comp, tile_depth_bounds.frag), in use
  *
  * The deferred renderers are the final stages of chapters 03, 07, 08 and 10; renderer_volume_pass is
  * chapter 07's pass state, renderer_stencil_pass and renderer_stencil_light_pass chapter 08's, and
@@ -136,8 +139,9 @@ bool renderers_draw(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint
 const fbo *renderers_accum(const renderer_set *r);
 bool renderer_have_compute(void);
 void renderer_tile_sphere(const gpu_light *light, const frame_view *view, vec4 out);
-void renderer_tile_frustum_make(const frame_view *view, const float rect[4], const float depth[2],
+void renderer_tile_frustum_make(const frame_view *view, int x, int y, int size, const float depth[2],
                                 renderer_tile_frustum *f);
+void renderer_tile_bind_view(GLuint program, const frame_view *view);
 bool renderer_tile_sphere_visible(const renderer_tile_frustum *f, const vec4 sphere);
 
 #endif

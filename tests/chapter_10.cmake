@@ -123,13 +123,16 @@ function(chapter_10_tests)
   # --path compute on a context without compute shaders: one clear line, exit 1; the default falls
   # back to the GL 3.3 path (simulated with COURSE_NO_COMPUTE=1).
   add_test(NAME chapters.10_no_compute
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_tiled_no_compute.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/10_no_compute
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_no_compute.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/10_no_compute path
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(chapters.10_no_compute PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
-  # The compute shader validates as GLSL 4.30 (tests/run_glslang.sh checks the rest at 3.30).
-  add_test(NAME shaders.glslang_compute COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_tiled_glslang.sh
-           ${CMAKE_SOURCE_DIR}/shaders)
-  set_tests_properties(shaders.glslang_compute PROPERTIES LABELS unit SKIP_RETURN_CODE 77)
+  # The L key switches --path at run time (and stays on the CPU without compute shaders).
+  add_test(NAME chapters.10_path_key
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_compute_key.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/10_path_key
+            path "tile lists"
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.10_path_key PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  # The compute shaders validate as GLSL 4.30 in shaders.glslang (tests/run_glslang.sh).
 
   # Bad option values are refused with a message naming the option.
   add_test(NAME chapters.10_bad_path COMMAND ${C} --headless --path gpu WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})

@@ -53,6 +53,51 @@ function(chapter_11_tests)
   course_agreement_test(11_renderer_table_forward_plus 0 0
     ${C} --renderer forward-plus --lights 256 VS ${C} --renderer forward --lights 256)
 
+  # The light lists from the compute passes (--assign compute) are the CPU's, bit for bit: --assign
+  # check reads them back every frame and compares them with cluster_lists_assign's on the same view
+  # (exit 1, naming the first cluster that differs). Exact, not within a bound: both take the same
+  # candidate clusters (cluster_grid_sphere_slices and _tiles, on the CPU) and the shader's
+  # sphere-against-box test adds up the same floats in the same order (`precise`: no fused
+  # multiply-add). Then both renderers draw the same bytes from either list.
+  set(assign_cases
+    "default" ""
+    "lights1024" "--lights 1024"
+    "city" "--scene ${CITY} --size 800x800"
+    "spots" "--scene ${SPOTS}"
+    "cutoff0" "--cutoff 0"
+    "overflow" "--lights 256 --cluster-lights 2")
+  foreach(scene inside_volume near_plane far_plane clustered_beyond_far spot_near_plane spot_far_plane)
+    list(APPEND assign_cases ${scene} "--scene ${S}/${scene}.scene")
+  endforeach()
+  list(LENGTH assign_cases n_cases)
+  math(EXPR last "${n_cases} - 1")
+  foreach(i RANGE 0 ${last} 2)
+    math(EXPR j "${i} + 1")
+    list(GET assign_cases ${i} name)
+    list(GET assign_cases ${j} args)
+    separate_arguments(args UNIX_COMMAND "${args}")
+    add_test(NAME chapters.11_assign_same_${name}
+      COMMAND ${C} --headless --frames 1 --gl-debug --assign check ${args} WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(chapters.11_assign_same_${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+    foreach(renderer deferred forward-plus)
+      course_agreement_test(11_${renderer}_assign_cpu_vs_compute_${name} 0 0
+        ${C} --renderer ${renderer} --assign cpu ${args} VS ${C} --renderer ${renderer} --assign compute ${args})
+    endforeach()
+  endforeach()
+  # --assign compute on a context without compute shaders: one clear line, exit 1; the default falls
+  # back to the CPU (simulated with COURSE_NO_COMPUTE=1).
+  add_test(NAME chapters.11_no_compute
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_no_compute.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/11_no_compute
+            assign
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.11_no_compute PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  # The L key switches --assign at run time (and stays on the CPU without compute shaders).
+  add_test(NAME chapters.11_assign_key
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_compute_key.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/11_assign_key
+            assign "light assignment"
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.11_assign_key PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+
   # The work: at most 3x the ideal (pixel, light) pairs, never fewer; the chapter and the benchmark's
   # two renderers count the same.
   if(TARGET bench)

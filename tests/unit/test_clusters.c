@@ -210,6 +210,28 @@ static void test_lists_in_light_order_and_overflow(void **s)
     cluster_lists_destroy(&l);
 }
 
+/* The comparison --assign check makes: the same lists are the same; one entry or one count changed
+ * is found, at its cluster. */
+static void test_lists_first_difference(void **s)
+{
+    (void)s;
+    cluster_grid g;
+    make_grid(&g, 0, W, H);
+    const float spheres[2][4] = {{0, 0, -5, 1}, {0.2f, 0, -5, 1}};
+    cluster_lists a = {0}, b = {0};
+    assert_true(cluster_lists_assign(&a, &g, spheres, 2, 0));
+    assert_true(cluster_lists_assign(&b, &g, spheres, 2, 0));
+    assert_int_equal(cluster_lists_first_difference(&a, &b), -1);
+    int c = cluster_grid_index(&g, W / 2, H / 2, 5.0f);
+    b.indices[b.ranges[2 * c] + 1] = 0; /* light order broken */
+    assert_int_equal(cluster_lists_first_difference(&a, &b), c);
+    b.indices[b.ranges[2 * c] + 1] = 1;
+    b.ranges[2 * c + 1] = -1; /* overflowed on one side only */
+    assert_int_equal(cluster_lists_first_difference(&a, &b), c);
+    cluster_lists_destroy(&a);
+    cluster_lists_destroy(&b);
+}
+
 /* A spot's bounding sphere holds its cone cut by its sphere, narrow and wide. */
 static void test_spot_bounds(void **s)
 {
@@ -240,4 +262,5 @@ static void test_spot_bounds(void **s)
 
 UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_slice_of_depth), cmocka_unit_test(test_cubic_slices),
                cmocka_unit_test(test_sphere_in_every_cluster_it_touches),
-               cmocka_unit_test(test_lists_in_light_order_and_overflow), cmocka_unit_test(test_spot_bounds))
+               cmocka_unit_test(test_lists_in_light_order_and_overflow),
+               cmocka_unit_test(test_lists_first_difference), cmocka_unit_test(test_spot_bounds))
