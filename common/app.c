@@ -43,6 +43,27 @@ bool app_extra_number(const app *a, const char *name, double lo, double hi, doub
     return false;
 }
 
+bool app_extra_compute(const app *a, const char *name, bool *compute)
+{
+    const char *value = app_extra(a, name);
+    *compute = value ? strcmp(value, "cpu") != 0 : renderer_have_compute();
+    if (!*compute || renderer_have_compute())
+        return true;
+    log_error("--%s %s needs compute shaders (OpenGL 4.3), which this context %s: use --%s cpu", name, value,
+              GLAD_GL_VERSION_4_3 ? "has, hidden by COURSE_NO_COMPUTE" : "does not have", name);
+    return false;
+}
+
+void app_toggle_compute(bool *compute, const char *what)
+{
+    if (!*compute && !renderer_have_compute()) {
+        log_info("%s: still the CPU, this context has no compute shaders (OpenGL 4.3)", what);
+        return;
+    }
+    *compute = !*compute;
+    log_info("%s: %s", what, *compute ? "compute shaders" : "the CPU");
+}
+
 bool app_render_forward(app *a)
 {
     int id = renderer_find(a->cli->renderers ? a->cli->renderers[a->renderer] : NULL);
@@ -207,7 +228,7 @@ static bool draw_frame(app *a, loop *l, int *rc)
     a->count_pixels = l->opt->bench || l->window.overlay_on;
     a->shaded_pixels = -1;
     bool ok = gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) && l->desc->frame(a) &&
-              app_window_compare(&l->window, a);
+              app_window_compare(&l->window, a, l->desc->draw_forward);
     frame_timer_end(&a->timer);
     if (!ok || (!gl_check("frame") && l->opt->gl_debug)) {
         *rc = EXIT_CODE_RUNTIME;

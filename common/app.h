@@ -13,6 +13,16 @@
  *   app_extra(a, name)          the value of a chapter's own option
  *   app_extra_number(a, name, lo, hi, out)
  *                               that value as a number in [lo, hi]; logs and returns false if not
+ *   app_extra_compute(a, name, &compute)
+ *                               a chapter's choice between compute shaders and its GL 3.3 path
+ *                               (--NAME compute|cpu; chapter 10's --path, chapter 11's --assign):
+ *                               any value but "cpu" asks for compute; no value: compute where the
+ *                               context has it (renderer_have_compute). Asked for where it has not:
+ *                               false, and one line saying what is missing and what to use instead
+ *   app_toggle_compute(&compute, what)
+ *                               the same choice switched by a key: to the other path and one log
+ *                               line naming it; to compute where the context has none, one line
+ *                               saying so, and `compute` stays false
  *
  * A chapter fills an app_desc: its command-line description and five callbacks. Its frame
  * callback draws the final, display-encoded picture into a->target (RGBA8 colour + 32-bit float
@@ -59,6 +69,9 @@ typedef struct app_desc {
     bool (*frame)(app *a);          /* draw into a->target */
     void (*cleanup)(app *a);
     bool (*key)(app *a, int key);   /* a chapter's own keys; return true when handled */
+    /* compare mode's forward picture (key M), display-encoded into `target`; NULL: the renderer
+     * table's forward (chapter 13: forward MSAA at its own sample count) */
+    bool (*draw_forward)(app *a, GLuint target);
 } app_desc;
 
 int app_run(const app_desc *desc, int argc, char **argv);
@@ -68,5 +81,7 @@ bool app_renderer_is_forward(const app *a);
 bool app_view_is(const app *a, const char *name);
 const char *app_extra(const app *a, const char *name);
 bool app_extra_number(const app *a, const char *name, double lo, double hi, double *out);
+bool app_extra_compute(const app *a, const char *name, bool *compute);
+void app_toggle_compute(bool *compute, const char *what);
 
 #endif

@@ -51,7 +51,9 @@ const char *const *app_with_forward_plus(const char *const *list, const char **o
  *   app_window_create(w, a, opt) / app_window_destroy(w) / app_window_resize(w, a)
  *   app_window_move(w, a, dt)          mouse and held keys to the camera
  *   app_window_key(w, a, action)       the camera, light, overlay and compare keys; false: not one
- *   app_window_compare(w, a)           after the chapter's frame: forward and the composed picture
+ *   app_window_compare(w, a, draw_forward)
+ *                                      after the chapter's frame: forward (the chapter's own draw_forward
+ *                                      when not NULL) and the composed picture
  *   app_window_display(w, a, paused)   the picture with the overlay: what the window shows
  *   app_window_after_frame(w, a, shown, paused, &rc)
  *                                      the script's after-frame events; false: stop (rc says why)
@@ -86,7 +88,7 @@ void app_window_destroy(app_window *w);
 bool app_window_resize(app_window *w, const app *a);
 void app_window_move(app_window *w, app *a, double dt);
 bool app_window_key(app_window *w, app *a, key_action action);
-bool app_window_compare(app_window *w, app *a);
+bool app_window_compare(app_window *w, app *a, bool (*draw_forward)(app *a, GLuint target));
 const fbo *app_window_display(app_window *w, app *a, bool paused);
 bool app_window_after_frame(app_window *w, app *a, const fbo *shown, bool paused, int *rc);
 int app_window_overlay_text(const app_window *w, const app *a, bool paused, char *out, size_t size);

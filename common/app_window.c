@@ -161,7 +161,7 @@ bool app_window_key(app_window *w, app *a, key_action action)
 
 /* After the chapter's frame, inside the frame timer: forward under its own pass name, then both
  * into one picture. */
-bool app_window_compare(app_window *w, app *a)
+bool app_window_compare(app_window *w, app *a, bool (*draw_forward)(app *a, GLuint target))
 {
     w->shown = &a->target;
     if (w->compare == COMPARE_OFF)
@@ -170,7 +170,9 @@ bool app_window_compare(app_window *w, app *a)
         return false;
     frame_timer_mark(APP_COMPARE_PASS);
     const renderer_draw_options o = {0};
-    if (!renderers_draw(&a->renderers, RENDERER_FORWARD, &a->gs, w->cmp.forward.id, o, NULL) ||
+    bool drawn = draw_forward ? draw_forward(a, w->cmp.forward.id)
+                              : renderers_draw(&a->renderers, RENDERER_FORWARD, &a->gs, w->cmp.forward.id, o, NULL);
+    if (!drawn ||
         !compare_compose(&w->cmp, &a->target, w->compare, divider_pixel(w, a)))
         return false;
     w->shown = &w->cmp.shown;

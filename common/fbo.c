@@ -43,8 +43,15 @@ static void client_format(GLenum internal, GLenum *format, GLenum *type)
     }
 }
 
-static GLuint make_texture(GLenum internal, int width, int height)
+static GLuint make_texture(GLenum internal, int width, int height, int samples)
 {
+    if (samples > 1) { /* fixed sample locations: every attachment's samples lie at the same places */
+        GLuint t = gl_texture_create();
+        glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t);
+        glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, internal, width, height, GL_TRUE);
+        glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+        return t;
+    }
     GLenum format, type;
     client_format(internal, &format, &type);
     GLuint t = gl_texture_create();
@@ -63,12 +70,14 @@ bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height)
     memset(f, 0, sizeof *f);
     f->width = width;
     f->height = height;
+    f->samples = desc->samples > 1 ? desc->samples : 1;
+    const GLenum target = f->samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     f->id = gl_framebuffer_create();
     glBindFramebuffer(GL_FRAMEBUFFER, f->id);
     GLenum draw[FBO_MAX_COLOR];
     for (int i = 0; i < desc->color_count; i++) {
-        f->color[i] = make_texture(desc->color_formats[i], width, height);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i, GL_TEXTURE_2D, f->color[i], 0);
+        f->color[i] = make_texture(desc->color_formats[i], width, height, f->samples);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i, target, f->color[i], 0);
         draw[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
     }
     f->color_count = desc->color_count;
@@ -76,9 +85,9 @@ bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height)
     if (desc->shared_depth || desc->depth_format) {
         bool stencil = desc->depth_format == GL_DEPTH24_STENCIL8 || desc->depth_format == GL_DEPTH32F_STENCIL8;
         f->owns_depth = !desc->shared_depth;
-        f->depth = desc->shared_depth ? desc->shared_depth : make_texture(desc->depth_format, width, height);
+        f->depth = desc->shared_depth ? desc->shared_depth : make_texture(desc->depth_format, width, height, f->samples);
         glFramebufferTexture2D(GL_FRAMEBUFFER, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
-                               GL_TEXTURE_2D, f->depth, 0);
+                               target, f->depth, 0);
     }
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -7,7 +7,9 @@
  *                                         in GL's row order (bottom row first)
  *
  * desc.shared_depth attaches an existing depth texture instead of making one, so a lighting
- * pass can depth-test against the geometry pass's depth.
+ * pass can depth-test against the geometry pass's depth. desc.samples > 1 makes every attachment a
+ * GL_TEXTURE_2D_MULTISAMPLE texture with that many samples (fixed sample locations; chapter 13);
+ * 0 or 1 is a plain GL_TEXTURE_2D. A shared depth must have the same sample count.
  */
 #ifndef COMMON_FBO_H
 #define COMMON_FBO_H
@@ -24,6 +26,7 @@ typedef struct fbo_desc {
     GLenum depth_format; /* GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8, ... or 0 */
     GLuint shared_depth; /* attach this depth texture instead (depth_format says its format) */
     const char *name;    /* for messages */
+    int samples;         /* > 1: multisampled textures (GL_TEXTURE_2D_MULTISAMPLE); 0, 1: plain */
 } fbo_desc;
 
 typedef struct fbo {
@@ -33,6 +36,7 @@ typedef struct fbo {
     GLuint depth;
     bool owns_depth;
     int width, height;
+    int samples; /* 1, or the sample count of multisampled attachments */
 } fbo;
 
 bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height);

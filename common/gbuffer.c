@@ -75,6 +75,12 @@ int gbuffer_layout_bytes(const gbuffer_layout *layout, bool stencil)
 
 int gbuffer_bytes_per_pixel(void) { return gbuffer_layout_bytes(default_layout, false); }
 
+double gbuffer_memory_bytes(const gbuffer *g)
+{
+    const int samples = g->desc.samples > 1 ? g->desc.samples : 1;
+    return (double)gbuffer_layout_bytes(g->desc.layout, g->desc.stencil) * samples * g->fbo.width * g->fbo.height;
+}
+
 static bool is_reversed(const gbuffer_layout *layout) { return layout->depth == GBUFFER_DEPTH_D32F_REVERSED; }
 
 /* glClipControl is core in 4.5; the loader is generated for 4.6, so the flags say what is there. */
@@ -228,9 +234,10 @@ static bool make_targets(gbuffer *g, int width, int height)
         .color_count = 2,
         .depth_format = depth_format,
         .name = "gbuffer",
+        .samples = g->desc.samples,
     };
-    /* The copy has the same format: a depth blit needs it. */
-    const fbo_desc copy = {.depth_format = depth_format, .name = "gbuffer depth copy"};
+    /* The copy has the same format and samples: a depth blit needs them. */
+    const fbo_desc copy = {.depth_format = depth_format, .name = "gbuffer depth copy", .samples = g->desc.samples};
     return fbo_create(&g->fbo, &desc, width, height) &&
            (!g->desc.stencil || fbo_create(&g->depth_copy, &copy, width, height));
 }
@@ -333,10 +340,12 @@ void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program
     const GLuint textures[3] = {g->fbo.color[0], g->fbo.color[1],
                                 g->desc.stencil ? g->depth_copy.depth : g->fbo.depth};
     const bool reversed = is_reversed(g->desc.layout);
+    /* A multisampled G-buffer is read by shaders built with GBUFFER_MULTISAMPLE (sampler2DMS). */
+    const GLenum target = g->fbo.samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     glUseProgram(program);
     for (int i = 0; i < 3; i++) {
         glActiveTexture(GL_TEXTURE0 + (GLenum)(first_unit + i));
-        glBindTexture(GL_TEXTURE_2D, textures[i]);
+        glBindTexture(target, textures[i]);
         glUniform1i(glGetUniformLocation(program, names[i]), first_unit + i);
     }
     glActiveTexture(GL_TEXTURE0);

@@ -20,6 +20,8 @@
  *                                        u_inv_view_proj and u_eye (with a stencil: the depth's copy)
  *   gbuffer_bytes_per_pixel()            the default layout's size without stencil (a naive layout
  *                                        is GBUFFER_NAIVE_BYTES)
+ *   gbuffer_memory_bytes(g)              g's targets in bytes: layout bytes x samples x width x height
+ *                                        (without the stencil's depth copy)
  *
  *   gbuffer_layout_find(name)            the layout called name (--gbuffer), NULL when none is
  *   gbuffer_layout_bytes(layout, stencil)
@@ -76,6 +78,13 @@
  * against forward on the city (docs/02_mrt_gbuffer.md). shaders/gbuffer_read.glsl decodes a pixel
  * of any layout (uniforms from gbuffer_bind_textures): gbuffer_read(ivec2 pixel) -> surface.
  *
+ * Multisampling (chapter 13): desc.samples > 1 makes every target a multisampled texture with that
+ * many samples (0 or 1: the plain textures every other chapter uses). gbuffer_render is unchanged:
+ * without sample shading gbuffer.frag runs once per pixel per primitive, at the pixel centre, and
+ * writes its values to the samples the primitive covers; the depth is per sample. The shaders that
+ * read it are built with the define GBUFFER_MULTISAMPLE, which makes gbuffer_read.glsl's samplers
+ * sampler2DMS; gbuffer_read_sample(pixel, sample, position) reads one sample.
+ *
  * Reversed-Z flips every depth comparison against the G-buffer and needs the reversed projection
  * wherever something is depth-tested against it: gbuffer_depth_test_begin/end. The lighting passes
  * of chapters 04 on are written for standard depth (their pass state, and light_volume.frag's
@@ -129,6 +138,7 @@ extern const gbuffer_layout gbuffer_layouts[GBUFFER_LAYOUT_COUNT];
 typedef struct gbuffer_desc {
     bool stencil; /* a depth-stencil target (D24S8, or D32F_S8 for a float depth) */
     const gbuffer_layout *layout; /* NULL: gbuffer_default_layout() */
+    int samples;  /* > 1: multisampled targets (chapter 13); 0, 1: plain textures */
 } gbuffer_desc;
 
 typedef struct gbuffer {
@@ -146,6 +156,7 @@ void gbuffer_destroy(gbuffer *g);
 bool gbuffer_render(gbuffer *g, const gpu_scene *gs);
 void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program, int first_unit);
 int gbuffer_bytes_per_pixel(void);
+double gbuffer_memory_bytes(const gbuffer *g);
 
 const gbuffer_layout *gbuffer_layout_find(const char *name);
 int gbuffer_layout_bytes(const gbuffer_layout *layout, bool stencil);

@@ -4,9 +4,16 @@
 #define GBUFFER_READ_GLSL
 #include "octahedral.glsl"
 
-uniform sampler2D u_gbuffer_albedo; // SRGB8_ALPHA8 (texelFetch returns linear albedo) or RGBA8
-uniform sampler2D u_gbuffer_normal; // the normal, and the material where RT0 has no room for it
-uniform sampler2D u_gbuffer_depth;  // window-space depth in [0,1]
+// GBUFFER_MULTISAMPLE (chapter 13): the targets are multisampled; texelFetch's last argument is
+// then the sample, not the mip level, so gbuffer_read(pixel) reads sample 0.
+#ifdef GBUFFER_MULTISAMPLE
+#define GBUFFER_SAMPLER sampler2DMS
+#else
+#define GBUFFER_SAMPLER sampler2D
+#endif
+uniform GBUFFER_SAMPLER u_gbuffer_albedo; // SRGB8_ALPHA8 (texelFetch returns linear albedo) or RGBA8
+uniform GBUFFER_SAMPLER u_gbuffer_normal; // the normal, and the material where RT0 has no room for it
+uniform GBUFFER_SAMPLER u_gbuffer_depth;  // window-space depth in [0,1]
 uniform int u_gbuffer_normal_encoding; // SHADER_GBUFFER_NORMAL_*: how RT1 holds the normal
 uniform bool u_gbuffer_reversed_z;     // near 1, far 0 (glClipControl: NDC z = window depth)
 uniform mat4 u_inv_view_proj;       // of the projection the depth was written with
@@ -25,12 +32,17 @@ struct surface {
 // World position of the pixel's centre at window depth `depth`: undo the viewport transform to
 // NDC, then the projection and the view with one matrix, then the perspective divide. Reversed-Z
 // uses glClipControl's [0,1] depth range, so there NDC z is the window depth itself.
-vec3 gbuffer_position(ivec2 pixel, float depth)
+vec3 gbuffer_position_at(vec2 window_xy, float depth)
 {
-    vec2 ndc = (vec2(pixel) + 0.5) / u_viewport_size * 2.0 - 1.0;
+    vec2 ndc = window_xy / u_viewport_size * 2.0 - 1.0;
     float z = u_gbuffer_reversed_z ? depth : depth * 2.0 - 1.0;
     vec4 world = u_inv_view_proj * vec4(ndc, z, 1.0);
     return world.xyz / world.w;
+}
+
+vec3 gbuffer_position(ivec2 pixel, float depth)
+{
+    return gbuffer_position_at(vec2(pixel) + 0.5, depth);
 }
 
 bool gbuffer_is_background(float depth)
@@ -52,12 +64,10 @@ vec2 gbuffer_unpack_12_12(vec3 c)
     return vec2(b.x * 16.0 + x_lo, (b.y - x_lo * 16.0) * 256.0 + b.z);
 }
 
-// The surface at a pixel whose depth the caller has already read (and its position computed).
-surface gbuffer_read_at(ivec2 pixel, float depth, vec3 position)
+// The surface from its two stored texels, its depth and its position.
+surface gbuffer_decode(vec4 albedo, vec4 nm, float depth, vec3 position)
 {
     surface s;
-    vec4 nm = texelFetch(u_gbuffer_normal, pixel, 0);
-    vec4 albedo = texelFetch(u_gbuffer_albedo, pixel, 0);
     s.background = gbuffer_is_background(depth);
     s.position = position;
     s.albedo = albedo.rgb;
@@ -76,6 +86,22 @@ surface gbuffer_read_at(ivec2 pixel, float depth, vec3 position)
     s.specular = albedo.a;
     s.shininess = 1.0 + 255.0 * nm.w; // gbuffer.frag's shininess_store
     return s;
+}
+
+// The surface at a pixel whose depth the caller has already read (and its position computed).
+surface gbuffer_read_at(ivec2 pixel, float depth, vec3 position)
+{
+    return gbuffer_decode(texelFetch(u_gbuffer_albedo, pixel, 0), texelFetch(u_gbuffer_normal, pixel, 0),
+                          depth, position);
+}
+
+// One sample of a multisampled pixel, at the position the caller rebuilt for it (plain textures
+// have sample 0 only: there the index is the mip level).
+surface gbuffer_read_sample(ivec2 pixel, int sample_index, vec3 position)
+{
+    return gbuffer_decode(texelFetch(u_gbuffer_albedo, pixel, sample_index),
+                          texelFetch(u_gbuffer_normal, pixel, sample_index),
+                          texelFetch(u_gbuffer_depth, pixel, sample_index).r, position);
 }
 
 surface gbuffer_read(ivec2 pixel)

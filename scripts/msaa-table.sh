@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# msaa-table.sh [BIN_DIR] [SIZE] - chapter 13's sweep for the benchmark page: deferred MSAA against
+# forward MSAA on the default scene, at every sample count in 1 2 4 8 16 the context allows (a
+# count it refuses, or would round up, is left out). Per row: the median ms per frame of --bench
+# (glFinish + monotonic clock, after warm-up frames), the edge pixels' fraction, and the MiB of each
+# renderer's multisampled targets (deferred: the G-buffer; forward: RGBA16F colour + D32F depth).
+# Prints a markdown section on stdout; scripts/update-docs.sh appends it to the dated run.
+set -euo pipefail
+bin=${1:-build/bin}
+size=${2:-800x800}
+chapter="$bin/13_msaa"
+[ -x "$chapter" ] || { echo "msaa-table.sh: no $chapter (build first)" >&2; exit 2; }
+
+# key=value from a line: field NAME LINE
+field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<" $2"; }
+
+run() { # run SAMPLES RENDERER -> "median_ms mib edge_fraction", or nothing when refused
+  local out bench msaa
+  out=$("$chapter" --headless --size "$size" --frames 10 --bench --samples "$1" --renderer "$2" 2>/dev/null) || return 0
+  bench=$(grep '^bench:' <<<"$out") msaa=$(grep '^msaa:' <<<"$out")
+  echo "$(field median_ms "$bench") $(field msaa_mib "$msaa") $(field edge_fraction "$msaa")"
+}
+
+echo "## Deferred MSAA against forward MSAA"
+echo ""
+echo "Chapter 13 on the default scene at $size: median ms per frame (\`--bench\`, 10 frames after"
+echo "warm-up, glFinish + monotonic clock), the fraction of pixels shaded per sample (edges), and the"
+echo "memory of the multisampled targets. Sample counts the context does not offer are left out."
+echo ""
+echo "| samples | deferred ms | forward ms | deferred / forward | edge pixels | G-buffer MiB | forward target MiB |"
+echo "|---:|---:|---:|---:|---:|---:|---:|"
+for n in 1 2 4 8 16; do
+  read -r d_ms d_mib edges <<<"$(run "$n" deferred)" || true
+  read -r f_ms f_mib _ <<<"$(run "$n" forward)" || true
+  [ -n "${d_ms:-}" ] && [ -n "${f_ms:-}" ] || continue
+  awk -v n="$n" -v d="$d_ms" -v f="$f_ms" -v e="$edges" -v dm="$d_mib" -v fm="$f_mib" \
+    'BEGIN { printf "| %d | %.1f | %.1f | %.2f | %.2f %% | %.1f | %.1f |\n", n, d, f, d / f, 100 * e, dm, fm }'
+done
