@@ -31,6 +31,45 @@ static void print_choices(FILE *stream, const char *const *choices)
 const char *const cli_gbuffer_layouts[CLI_GBUFFER_LAYOUT_COUNT + 1] = {
     "reference", "compact", "compact-d24s8", "reversed-z", "linear-albedo", "oct8", "oct16", NULL};
 
+/* Words of `text` from column HELP_COLUMN, wrapped before HELP_WIDTH as the options above are. */
+#define HELP_COLUMN 27
+#define HELP_WIDTH 92
+static void print_wrapped(FILE *stream, const char *text, int column)
+{
+    while (*text) {
+        int word = (int)strcspn(text, " ");
+        if (column > HELP_COLUMN && column + 1 + word > HELP_WIDTH) {
+            fprintf(stream, "\n%*s", HELP_COLUMN, "");
+            column = HELP_COLUMN;
+        } else if (column > HELP_COLUMN) {
+            fputc(' ', stream);
+            column++;
+        }
+        fprintf(stream, "%.*s", word, text);
+        column += word;
+        text += word;
+        text += strspn(text, " ");
+    }
+    fputc('\n', stream);
+}
+
+/* A chapter's own option: its help, its choices and its default, wrapped. */
+static void print_extra(FILE *stream, const cli_extra *e)
+{
+    char text[1024];
+    int n = snprintf(text, sizeof text, "%s", e->help);
+    for (int i = 0; e->choices && e->choices[i] && n < (int)sizeof text; i++)
+        n += snprintf(text + n, sizeof text - (size_t)n, "%s%s", i ? "|" : " (", e->choices[i]);
+    if (e->choices && n < (int)sizeof text)
+        n += snprintf(text + n, sizeof text - (size_t)n, ")");
+    if (e->default_value && n < (int)sizeof text)
+        snprintf(text + n, sizeof text - (size_t)n, " (default %s)", e->default_value);
+    int column = fprintf(stream, "  --%s %s", e->name, e->metavar);
+    if (column < HELP_COLUMN)
+        column += fprintf(stream, "%*s", HELP_COLUMN - column, "");
+    print_wrapped(stream, text, HELP_COLUMN - 1 < column ? column : HELP_COLUMN);
+}
+
 void cli_print_help(const cli_desc *desc, FILE *stream)
 {
     fprintf(stream, "usage: %s [options]\n%s\n\noptions:\n", desc->program, desc->summary);
@@ -56,21 +95,8 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
         print_choices(stream, desc->views);
         fprintf(stream, " (default %s)\n", desc->views[0]);
     }
-    for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++) {
-        const cli_extra *e = &desc->extras[i];
-        fprintf(stream, "  --%s %s%*s%s", e->name, e->metavar,
-                (int)(22 - strlen(e->name) - strlen(e->metavar) > 0 ? 22 - strlen(e->name) - strlen(e->metavar)
-                                                                     : 1),
-                "", e->help);
-        if (e->choices) {
-            fprintf(stream, " (");
-            print_choices(stream, e->choices);
-            fprintf(stream, ")");
-        }
-        if (e->default_value)
-            fprintf(stream, " (default %s)", e->default_value);
-        fprintf(stream, "\n");
-    }
+    for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++)
+        print_extra(stream, &desc->extras[i]);
     fprintf(stream,
             "  --lights N               replace the scene's lights by N generated ones\n"
             "  --seed S                 seed of the light generator (default 1)\n"
