@@ -75,7 +75,7 @@ static struct {
     gbuffer g;
     clusters c;          /* chapter 11's grid and lists */
     fbo accum;           /* linear radiance; depth: the G-buffer's */
-    GLuint glass_program, present_program, query;
+    GLuint present_program, query;
     debug_views views;   /* --view overdraw's count target and heat map */
     gpu_scene_order order;
 } state;
@@ -100,10 +100,9 @@ static bool init(app *a)
 {
     state.order = strcmp(app_extra(a, "sort"), "none") == 0 ? GPU_SCENE_SCENE_ORDER : GPU_SCENE_BACK_TO_FRONT;
     a->pass_state = &glass_front_pass; /* the overlay shows it */
-    state.glass_program = gl_program_load("forward.vert", "forward_plus.frag", "TRANSPARENT 1");
     state.present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
     state.query = gl_query_create();
-    return state.glass_program && state.present_program && gbuffer_create(&state.g, a->width, a->height) &&
+    return state.present_program && gbuffer_create(&state.g, a->width, a->height) &&
            accum_follow_gbuffer() && clusters_create(&state.c, NULL) && debug_views_create(&state.views);
 }
 
@@ -112,33 +111,16 @@ static bool resize(app *a)
     return gbuffer_resize(&state.g, a->width, a->height) && accum_follow_gbuffer();
 }
 
-/* What the glass program reads: the lights, the objects (their opacity), chapter 11's lists and grid,
- * and row 2 of the view matrix (cglm is column-major), which gives a fragment's view depth. */
-static void bind_glass(const gpu_scene *gs, GLuint p)
-{
-    const mat4 *view = (const mat4 *)gs->view.view;
-    clusters_bind(&state.c, p, SHADER_UNIT_LIGHT_INDEX); /* and the unit after it; uses p */
-    gpu_scene_bind_lights(gs, p, SHADER_UNIT_LIGHTS);
-    gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS);
-    glUniform4f(glGetUniformLocation(p, "u_cluster_depth_row"), (*view)[0][2], (*view)[1][2], (*view)[2][2],
-                (*view)[3][2]);
-    glUniform3fv(glGetUniformLocation(p, "u_eye"), 1, gs->view.eye);
-}
-
 /* 3. the glass, into the framebuffer bound (it shares the G-buffer's depth): each transparent
  * object in state.order, with each of the two passes, its fragments lit by their clusters' lists */
 static bool draw_glass(app *a, const gl_pass_state *back, const gl_pass_state *front, bool overdraw)
 {
-    frame_timer_mark("transparent");
-    GLuint p = state.glass_program;
-    bind_glass(&a->gs, p);
-    glUniform1i(glGetUniformLocation(p, "u_view_mode"), overdraw ? SHADER_VIEW_OVERDRAW : SHADER_VIEW_LIT);
     const gl_pass_state *const passes[] = {back, front};
     gl_samples_begin(state.query, a->count_pixels);
-    gpu_scene_draw_transparent(&a->gs, p, state.order, passes, 2);
+    bool ok = clusters_shade_glass(&state.c, &a->gs, passes, 2, state.order,
+                                   overdraw ? CLUSTERS_VIEW_OVERDRAW : CLUSTERS_VIEW_LINEAR);
     a->shaded_pixels = gl_samples_end(state.query, a->count_pixels);
-    gl_pass_state_reset();
-    return gl_check("12 glass");
+    return ok;
 }
 
 /* --view overdraw: the glass pass's fragments counted, with its own faces and depth test, added up. */
@@ -213,7 +195,6 @@ static void cleanup(app *a)
     clusters_destroy(&state.c);
     gl_query_destroy(&state.query);
     gl_program_destroy(&state.present_program);
-    gl_program_destroy(&state.glass_program);
     fbo_destroy(&state.accum);
     gbuffer_destroy(&state.g);
 }

@@ -32,6 +32,7 @@ void clusters_destroy(clusters *c)
     gl_program_destroy(&c->depth_program);
     gl_program_destroy(&c->forward_program);
     gl_program_destroy(&c->deferred_program);
+    gl_program_destroy(&c->glass_program);
     gl_buffer_destroy(&c->range_buffer);
     gl_buffer_destroy(&c->list_buffer);
     gl_texture_destroy(&c->range_texture);
@@ -204,6 +205,25 @@ bool clusters_shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *gs,
 {
     frame_timer_mark("lighting");
     return shade_deferred(c, g, gs, pass, view_mode(view), view == CLUSTERS_VIEW_LINEAR);
+}
+
+bool clusters_shade_glass(clusters *c, const gpu_scene *gs, const gl_pass_state *const passes[], int pass_count,
+                          gpu_scene_order order, clusters_view view)
+{
+    GLuint p = program_once(&c->glass_program, "forward.vert", "forward_plus.frag", "TRANSPARENT 1");
+    if (!p)
+        return false;
+    frame_timer_mark("transparent");
+    glUseProgram(p);
+    gpu_scene_bind_lights(gs, p, SHADER_UNIT_LIGHTS);
+    gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS); /* and with them each object's opacity */
+    clusters_bind(c, p, SHADER_UNIT_LIGHT_INDEX);       /* and the unit after it */
+    bind_depth_row(p, gs);
+    glUniform3fv(glGetUniformLocation(p, "u_eye"), 1, gs->view.eye);
+    glUniform1i(glGetUniformLocation(p, "u_view_mode"), view_mode(view));
+    gpu_scene_draw_transparent(gs, p, order, passes, pass_count);
+    gl_pass_state_reset();
+    return gl_check("clusters: glass");
 }
 
 /* The count pass's target at the view's size: RGBA32F (covered, loop length) and a float depth. */

@@ -24,6 +24,13 @@
  *                                     the clustered deferred pass: one full-screen triangle reading
  *                                     g once per pixel (clustered_deferred.frag), into the
  *                                     framebuffer bound, with the state `pass`
+ *   clusters_shade_glass(c, gs, passes, pass_count, order, view)
+ *                                     chapter 12's glass: every transparent object in `order`, with
+ *                                     each of `passes` in turn, shaded by forward_plus.frag
+ *                                     (TRANSPARENT: linear radiance, the opacity in alpha) with the
+ *                                     list of the cluster each fragment falls in, into the (float)
+ *                                     framebuffer bound; view CLUSTERS_VIEW_OVERDRAW: one count per
+ *                                     fragment (1 / SHADER_OVERDRAW_SCALE) instead
  *   clusters_count(c, g, gs)          the light-loop iterations of the last frame, exactly as the
  *                                     shading pass ran them: the same shader in its count view into
  *                                     a float target, read back and added up (g NULL: Forward+, which
@@ -35,7 +42,9 @@
  * (each pixel's cluster list length as the heat map, odd slices darker).
  * Both renderers call the one shading function (shaders/shading.glsl) over the same lists: the
  * difference between them is only where the surface comes from, the G-buffer or the rasteriser.
- * Transparent objects are not drawn (chapter 12's glass is forward's alone).
+ * Transparent objects are drawn only by clusters_shade_glass, after the opaque frame: a cluster's
+ * list holds every light that can reach any point of the cluster's box, so a glass fragment finds
+ * its lights from its own depth, as a Forward+ fragment does.
  */
 #ifndef COMMON_CLUSTERS_H
 #define COMMON_CLUSTERS_H
@@ -72,7 +81,7 @@ typedef struct clusters {
     float (*spheres)[4]; /* per light, its bounding sphere in view space */
     int sphere_cap;
     GLuint range_buffer, range_texture, list_buffer, list_texture;
-    GLuint depth_program, forward_program, deferred_program;
+    GLuint depth_program, forward_program, deferred_program, glass_program;
     fbo count_target; /* RGBA32F + depth: the count view */
     float *count_pixels;
     long evaluations, covered;
@@ -86,6 +95,8 @@ bool clusters_draw_depth(clusters *c, const gpu_scene *gs);
 bool clusters_shade_forward(clusters *c, const gpu_scene *gs, const gl_pass_state *pass, clusters_view view);
 bool clusters_shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *gs, const gl_pass_state *pass,
                              clusters_view view);
+bool clusters_shade_glass(clusters *c, const gpu_scene *gs, const gl_pass_state *const passes[], int pass_count,
+                          gpu_scene_order order, clusters_view view);
 bool clusters_count(clusters *c, const gbuffer *g, const gpu_scene *gs);
 
 #endif

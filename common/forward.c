@@ -203,9 +203,7 @@ static bool hdr_follow_view(forward *f, int width, int height)
     return fbo_create(&f->hdr, &desc, width, height);
 }
 
-/* A scene with glass, for a display-encoded framebuffer: the frame in linear radiance in f->hdr, so
- * that the glass blends with linear radiance, then display-encoded once (forward.h). */
-static bool draw_through_hdr(forward *f, const gpu_scene *gs, forward_options options)
+bool forward_draw_linear(forward *f, const gpu_scene *gs, bool (*draw)(void *user, const gpu_scene *gs), void *user)
 {
     GLint bound = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
@@ -217,8 +215,7 @@ static bool draw_through_hdr(forward *f, const gpu_scene *gs, forward_options op
     glBindFramebuffer(GL_FRAMEBUFFER, f->hdr.id);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    options.linear_output = true;
-    if (!draw_opaque_then_glass(f, gs, options))
+    if (!draw(user, gs))
         return false;
 
     frame_timer_mark("present");
@@ -240,13 +237,27 @@ static bool draw_through_hdr(forward *f, const gpu_scene *gs, forward_options op
     return true;
 }
 
+/* Forward's own frame with glass, through forward_draw_linear. */
+typedef struct linear_frame {
+    forward *f;
+    forward_options options;
+} linear_frame;
+
+static bool draw_linear_frame(void *user, const gpu_scene *gs)
+{
+    linear_frame *l = user;
+    return draw_opaque_then_glass(l->f, gs, l->options);
+}
+
 bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options)
 {
     if (gs->transparent_count == 0)
         return draw_opaque(f, gs, options);
     if (options.linear_output)
         return draw_opaque_then_glass(f, gs, options);
-    return draw_through_hdr(f, gs, options);
+    linear_frame l = {f, options};
+    l.options.linear_output = true;
+    return forward_draw_linear(f, gs, draw_linear_frame, &l);
 }
 
 bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_options options)

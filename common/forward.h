@@ -15,6 +15,11 @@
  *                                           blended over what it holds, object by object in
  *                                           glass->order, each with every state of glass->passes;
  *                                           leaves gl_pass_state_reset()'s state (chapter 12)
+ *   forward_draw_linear(f, gs, draw, user)  a frame with glass for the display-encoded framebuffer
+ *                                           bound: draw(user, gs) draws it in linear radiance into
+ *                                           f->hdr, which holds the bound framebuffer's depth; then
+ *                                           the present pass encodes it into the bound framebuffer,
+ *                                           whose depth gets f->hdr's back (below; Forward+ too)
  *   forward_shaded_pixels(f)                fragments that passed the depth test in the last
  *                                           shading pass (GL_SAMPLES_PASSED), when counting is on:
  *                                           the opaque objects' plus the transparent ones'
@@ -90,6 +95,7 @@ bool forward_build_light_lists(forward *f, const gpu_scene *gs);
 void forward_draw_depth(const forward *f, const gpu_scene *gs);
 bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options);
 bool forward_draw_transparent(forward *f, const gpu_scene *gs, const forward_glass *glass);
+bool forward_draw_linear(forward *f, const gpu_scene *gs, bool (*draw)(void *user, const gpu_scene *gs), void *user);
 long forward_shaded_pixels(const forward *f);
 
 #endif

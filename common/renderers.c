@@ -147,7 +147,9 @@ static bool ensure(renderer_set *r, renderer_id id, const gpu_scene *gs)
          * on llvmpipe they were measured no faster on the city (faster on the default scene). */
         if (!r->have_clusters && !(r->have_clusters = clusters_create(&r->clusters, NULL)))
             return false;
-        return id == RENDERER_FORWARD_PLUS || ensure_gbuffer(r, gs);
+        if (id == RENDERER_FORWARD_PLUS) /* a scene with glass goes through forward's linear frame */
+            return gs->transparent_count == 0 || r->have_forward || (r->have_forward = forward_create(&r->fwd));
+        return ensure_gbuffer(r, gs);
     }
     if (renderer_table[id].forward)
         return r->have_forward || (r->have_forward = forward_create(&r->fwd));
@@ -251,13 +253,33 @@ static bool draw_stencil(renderer_stencil *st, const gpu_scene *gs, GLuint targe
     return gl_check("renderers: deferred-stencil");
 }
 
+static const gl_pass_state forward_plus_equal = {.cull = GL_BACK, .depth_func = GL_EQUAL};
+
+/* Forward+ in linear radiance, then the glass over it with the same lists (chapter 12). */
+static bool forward_plus_linear(void *clusters_, const gpu_scene *gs)
+{
+    clusters *c = clusters_;
+    return clusters_shade_forward(c, gs, &forward_plus_equal, CLUSTERS_VIEW_LINEAR) &&
+           clusters_shade_glass(c, gs, forward_glass_passes, 2, GPU_SCENE_BACK_TO_FRONT, CLUSTERS_VIEW_LINEAR);
+}
+
+/* Forward+'s shading after its pre-pass; a scene with glass blends it in linear radiance: straight
+ * into a float target, else through forward's linear frame, as forward does. */
+static bool shade_forward_plus(renderer_set *r, const gpu_scene *gs, clusters_view view)
+{
+    if (gs->transparent_count == 0)
+        return clusters_shade_forward(&r->clusters, gs, &forward_plus_equal, view);
+    if (view == CLUSTERS_VIEW_LINEAR)
+        return forward_plus_linear(&r->clusters, gs);
+    return forward_draw_linear(&r->fwd, gs, forward_plus_linear, &r->clusters);
+}
+
 /* chapters/11_clustered.c's two frames, with its pass states: Forward+ (pre-pass, then GL_EQUAL) or
  * clustered deferred (G-buffer, then one full-screen pass). */
 static bool draw_clustered(renderer_set *r, renderer_id id, const gpu_scene *gs, GLuint target,
                            renderer_draw_options o, renderer_result *res)
 {
     static const gl_pass_state prepass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
-    static const gl_pass_state equal = {.cull = GL_BACK, .depth_func = GL_EQUAL};
     static const gl_pass_state fullscreen = {0};
     clusters *c = &r->clusters;
     bool deferred = id == RENDERER_DEFERRED_CLUSTERED;
@@ -274,7 +296,7 @@ static bool draw_clustered(renderer_set *r, renderer_id id, const gpu_scene *gs,
         gl_pass_state_apply(&prepass);
         glClearColor(0, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        ok = clusters_draw_depth(c, gs) && clusters_assign(c, gs) && clusters_shade_forward(c, gs, &equal, view);
+        ok = clusters_draw_depth(c, gs) && clusters_assign(c, gs) && shade_forward_plus(r, gs, view);
     }
     gl_pass_state_reset();
     ok = ok && (!o.count_pixels || clusters_count(c, deferred ? &r->g : NULL, gs));

@@ -42,6 +42,18 @@ function(chapter_12_tests)
   course_agreement_test(12_renderer_forward 0 0 ${C} --renderer forward --scene ${GLASS}
     VS 00_forward --scene ${GLASS})
 
+  # Forward+ draws the glass too, with the cluster lists (clusters_shade_glass) where forward uses its
+  # per-object lists: a light on neither list adds exactly 0 and both lists are in light order, so
+  # the sums, and the pictures, are the same to the byte (measured on these scenes).
+  foreach(case "glass|--scene@${GLASS}" "glass_lights64|--scene@${GLASS}@--lights@64"
+               "glass_inside|--scene@${S}/glass_inside.scene" "glass_same_depth|--scene@${S}/glass_same_depth.scene")
+    course_case("${case}" name args)
+    course_agreement_test(00_forward_plus_${name} 0 0
+      00_forward --renderer forward-plus ${args} VS 00_forward --renderer forward ${args})
+  endforeach()
+  course_agreement_test(12_forward_plus_glass 0 0 ${C} --renderer forward-plus --scene ${GLASS}
+    VS 00_forward --scene ${GLASS})
+
   # The order matters: drawn in the scene's order (nearest first) the glass is not forward's picture.
   course_agreement_test(12_sort_none_differs 1 0.0001 ${C} --scene ${GLASS} --sort none VS 00_forward --scene ${GLASS})
   set_tests_properties(agree.12_sort_none_differs PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")

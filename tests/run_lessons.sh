@@ -44,7 +44,7 @@ expect_first "clusters_shade_forward" 11_clustered.c
 expect_first "GL_EQUAL" 00_forward.c
 expect_first "forward_draw_depth" 00_forward.c
 expect_first "GL_ONE_MINUS_SRC_ALPHA" 12_transparency.c
-expect_first "gpu_scene_draw_transparent" 12_transparency.c
+expect_first "clusters_shade_glass" 12_transparency.c
 expect_first "CLUSTERS_VIEW_LINEAR" 12_transparency.c
 expect_first "GPU_SCENE_BACK_TO_FRONT" 12_transparency.c
 expect_first "glCheckFramebufferStatus" 01_fbo_setup.c
