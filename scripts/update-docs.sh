@@ -6,13 +6,15 @@
 #   chapters.md     every chapter's --bench line on the default scene (its 8 lights, and 256
 #                   generated ones), deferred and forward, with each pass's median; and the
 #                   tables of single chapters the pages discuss (02's views, 03's light counts,
-#                   06's accumulation formats, 07's culling modes and the city, and the
-#                   hard-cases page's 200 overlapping lights at six cut-offs)
+#                   06's accumulation formats, 07's culling modes and the city, the
+#                   hard-cases page's 200 overlapping lights at six cut-offs, the many-light
+#                   chapters on their scenes, 11's two light assignments, 12's glass and 13's
+#                   sample counts, scripts/msaa-table.sh)
 #   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots
 # Each file starts with the same stamp (date, CPU, cores, GL renderer, commit, clock). The pages
 # embed sections of these files verbatim between <!-- generated: FILE#SECTION --> markers, and
 # tests/doc_generated.py fails when a page's copy differs from the file (--update refreshes them).
-# Takes about 8 minutes on 2 cores with llvmpipe; --quick (seconds) is for trying the script.
+# Takes about 20 minutes on 2 cores with llvmpipe; --quick (a few minutes) is for trying the script.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -127,6 +129,23 @@ chapter_table() {
     echo
   done
   header "12-glass-forward-800x600"; run 00_forward --size 800x600 --scene assets/scenes/glass.scene; echo
+  header "12-glass-forward-plus-800x600"
+  run 00_forward --size 800x600 --scene assets/scenes/glass.scene --renderer forward-plus
+  echo
+  # Chapter 11's light lists made on the CPU and by compute shaders: the same lists, other costs.
+  for assign in cpu compute; do
+    for scene in "default-1024|--lights 1024" "city|--scene assets/scenes/city.scene"; do
+      read -r -a args <<<"${scene#*|}"
+      header "11-assign-$assign-${scene%%|*}-800x800"
+      for r in deferred forward-plus; do
+        run 11_clustered --size 800x800 --assign "$assign" --renderer "$r" "${args[@]}"
+      done
+      echo
+    done
+  done
+  scripts/msaa-table.sh build/bin 800x800 13-msaa-default-800x800
+  scripts/msaa-table.sh build/bin 800x800 13-msaa-default-1024-800x800 --lights 1024
+  scripts/msaa-table.sh build/bin 800x800 13-msaa-city-800x800 --scene assets/scenes/city.scene
 } >"$data/chapters.md.tmp"
 mv "$data/chapters.md.tmp" "$data/chapters.md"
 echo "wrote $data/chapters.md"
