@@ -132,6 +132,7 @@ static bool frame_forward_plus(app *a)
     gl_pass_state_apply(&prepass);
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    frame_timer_mark("depth pre-pass");
     if (!clusters_draw_depth(&state.c, &a->gs) || !clusters_assign(&state.c, &a->gs))
         return false;
     bool ok = clusters_shade_forward(&state.c, &a->gs, &shade_after_prepass, view_of(a));

@@ -30,6 +30,7 @@
 #include "debug_views.h"
 #include "gbuffer.h"
 #include "log.h"
+#include "renderers.h"
 
 #include <string.h>
 
@@ -102,8 +103,11 @@ static bool init(app *a)
     a->pass_state = &glass_front_pass; /* the overlay shows it */
     state.present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
     state.query = gl_query_create();
+    /* chapter 11's lists, made where it makes them by default: by compute shaders where the context
+     * has them (the same lists as on the CPU, chapters.11_assign_same_*) */
+    const clusters_desc lists = {.compute = renderer_have_compute()};
     return state.present_program && gbuffer_create(&state.g, a->width, a->height) &&
-           accum_follow_gbuffer() && clusters_create(&state.c, NULL) && debug_views_create(&state.views);
+           accum_follow_gbuffer() && clusters_create(&state.c, &lists) && debug_views_create(&state.views);
 }
 
 static bool resize(app *a)

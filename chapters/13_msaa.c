@@ -25,6 +25,7 @@
 #include "forward.h"
 #include "gbuffer.h"
 #include "log.h"
+#include "renderers.h"
 
 #include <stdio.h>
 
@@ -65,7 +66,7 @@ static struct {
     forward fwd;
     fbo msaa; /* forward's frame: RGBA16F + depth, multisampled */
     fbo lit;  /* the resolved linear picture (RGBA16F) + the edge stencil */
-    GLuint shade_program, resolve_program, present_program, edge_query;
+    GLuint edge_program, shade_program, resolve_program, present_program, edge_query;
     long edge_pixels;
 } state;
 
@@ -133,13 +134,21 @@ static bool init(app *a)
     snprintf(defines, sizeof defines, "MSAA_SAMPLES %d%s", state.samples,
              state.samples > 1 ? "\nGBUFFER_MULTISAMPLE 1\nMSAA_MULTISAMPLE 1" : "");
     state.shade_program = gl_program_load("fullscreen.vert", "msaa_deferred.frag", defines);
+    if (state.samples > 1) { /* the edge pass's own program: a shader that may discard runs before the
+                                stencil test, so the lighting passes' program must not hold it */
+        char edge_defines[128];
+        snprintf(edge_defines, sizeof edge_defines, "%s\nMSAA_EDGES 1", defines);
+        state.edge_program = gl_program_load("fullscreen.vert", "msaa_deferred.frag", edge_defines);
+    }
     state.resolve_program = gl_program_load("fullscreen.vert", "msaa_resolve.frag", defines);
     state.present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
     state.edge_query = gl_query_create();
     a->pass_state = &pixel_pass; /* the overlay shows it */
-    return state.shade_program && state.resolve_program && state.present_program &&
+    const clusters_desc lists = {.compute = renderer_have_compute()}; /* chapter 11's default */
+    return state.shade_program && (state.samples == 1 || state.edge_program) && state.resolve_program &&
+           state.present_program &&
            gbuffer_create_with(&state.g, a->width, a->height, &(gbuffer_desc){.samples = state.samples}) &&
-           read_samples() && clusters_create(&state.c, NULL) && forward_create(&state.fwd) && make_targets(a);
+           read_samples() && clusters_create(&state.c, &lists) && forward_create(&state.fwd) && make_targets(a);
 }
 
 static bool resize(app *a)
@@ -150,7 +159,7 @@ static bool resize(app *a)
 /* One of msaa_deferred.frag's passes over the whole screen, with the G-buffer and the cluster lists. */
 static void draw_shade_pass(const app *a, int pass, const gl_pass_state *s)
 {
-    const GLuint p = state.shade_program;
+    const GLuint p = pass == PASS_EDGES ? state.edge_program : state.shade_program;
     const mat4 *view = (const mat4 *)a->gs.view.view; /* row 2: view depth = -dot(row, (p, 1)) */
     gl_pass_state_apply(s);
     glUseProgram(p);
@@ -210,6 +219,7 @@ static bool frame_forward(app *a, bool plus, bool timed)
         gl_pass_state_apply(&prepass);
         glClearColor(0, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        frame_timer_mark("depth pre-pass");
         ok = clusters_draw_depth(&state.c, &a->gs) && clusters_assign(&state.c, &a->gs) &&
              clusters_shade_forward(&state.c, &a->gs, &shade_after_prepass, CLUSTERS_VIEW_LINEAR);
         gl_pass_state_reset();
@@ -282,6 +292,7 @@ static void cleanup(app *a)
     if (a->options->bench && state.shade_program)
         print_report(a);
     gl_query_destroy(&state.edge_query);
+    gl_program_destroy(&state.edge_program);
     gl_program_destroy(&state.shade_program);
     gl_program_destroy(&state.resolve_program);
     gl_program_destroy(&state.present_program);

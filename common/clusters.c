@@ -148,7 +148,6 @@ bool clusters_draw_depth(clusters *c, const gpu_scene *gs)
     GLuint p = program_once(&c->depth_program, "forward.vert", "depth_only.frag", NULL);
     if (!p)
         return false;
-    frame_timer_mark("depth pre-pass");
     glUseProgram(p);
     gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);

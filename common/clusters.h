@@ -15,7 +15,8 @@
  *                                     u_cluster_ranges and u_cluster_lights on first_unit and
  *                                     first_unit + 1, and the grid uniforms of shaders/clusters.glsl
  *   clusters_draw_depth(c, gs)        Forward+'s depth pre-pass: every opaque object, depth only,
- *                                     with the caller's depth state (forward.vert + depth_only.frag)
+ *                                     with the caller's depth state (forward.vert + depth_only.frag);
+ *                                     the caller names the pass in the frame timer
  *   clusters_shade_forward(c, gs, pass, view)
  *                                     Forward+'s shading: every opaque object with forward_plus.frag
  *                                     and the state `pass` (after the pre-pass: GL_EQUAL), into the

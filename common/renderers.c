@@ -296,6 +296,7 @@ static bool draw_clustered(renderer_set *r, renderer_id id, const gpu_scene *gs,
         gl_pass_state_apply(&prepass);
         glClearColor(0, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        frame_timer_mark("depth pre-pass");
         ok = clusters_draw_depth(c, gs) && clusters_assign(c, gs) && shade_forward_plus(r, gs, view);
     }
     gl_pass_state_reset();

@@ -36,7 +36,7 @@ frame times with glFinish and a monotonic clock; medians over the frames each ta
 
 # One table row from a --bench line: chapter, renderer, median, passes, shaded pixels.
 row() {
-  awk '{
+  awk '/^bench:/ {
     for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2]
       if (kv[1] ~ /_ms$/ && kv[1] !~ /^(median|min|max|mean)_ms$/) {
         name = substr(kv[1], 1, length(kv[1]) - 3); gsub("_", " ", name)

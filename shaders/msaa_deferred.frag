@@ -1,14 +1,16 @@
 #version 330 core
 // msaa_deferred.frag - chapter 13's full-screen passes over a multisampled G-buffer
 // (GBUFFER_MULTISAMPLE, MSAA_SAMPLES samples per pixel), into a linear float target:
-//   u_pass MSAA_PASS_EDGES   keeps (for the stencil) only the edge pixels: those whose samples do not
-//                            all hold the same surface; discards the others
+//   MSAA_EDGES (its own program) keeps, for the stencil, only the edge pixels: those whose samples
+//                            do not all hold the same surface; discards the others
 //   u_pass MSAA_PASS_PIXEL   a pixel whose samples hold one surface: shaded once, at the pixel centre
 //   u_pass MSAA_PASS_SAMPLES an edge pixel: each sample shaded at its own position, the results
 //                            averaged in linear radiance (the resolve, done while lighting)
 // Without GBUFFER_MULTISAMPLE (--samples 1) the pixel pass is chapter 11's clustered deferred pass.
 // The lights come from chapter 11's cluster lists (clusters.glsl), through the one shading function.
-// variants: MSAA_SAMPLES 1 | MSAA_SAMPLES 4, GBUFFER_MULTISAMPLE 1, MSAA_MULTISAMPLE 1
+// Built twice: with MSAA_EDGES, the edge pass alone (it discards); without, the two lighting passes,
+// which never discard, so that the stencil test can reject a fragment before its shader runs.
+// variants: MSAA_SAMPLES 1 | MSAA_SAMPLES 4, GBUFFER_MULTISAMPLE 1, MSAA_MULTISAMPLE 1 | MSAA_SAMPLES 4, GBUFFER_MULTISAMPLE 1, MSAA_MULTISAMPLE 1, MSAA_EDGES 1
 #include "shading.glsl"
 #include "gbuffer_read.glsl"
 #include "heat.glsl"
@@ -86,15 +88,17 @@ vec3 shade_surface(surface s)
     return cluster_shade(range, s.position, s.normal, v, s.albedo, s.specular, s.shininess);
 }
 
+#ifdef MSAA_EDGES
+void main()
+{
+    if (!is_edge(ivec2(gl_FragCoord.xy)))
+        discard;
+    o_color = vec4(0.0);
+}
+#else
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    if (u_pass == MSAA_PASS_EDGES) {
-        if (!is_edge(p))
-            discard;
-        o_color = vec4(0.0);
-        return;
-    }
     if (u_pass == MSAA_PASS_SAMPLES) {
         if (u_show_edges) {
             o_color = u_edge_colour;
@@ -118,3 +122,4 @@ void main()
     surface s = gbuffer_read_at(p, depth, gbuffer_position_at(vec2(p) + u_mean_offset, depth));
     o_color = vec4(shade_surface(s), 1.0);
 }
+#endif
