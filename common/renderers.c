@@ -143,9 +143,10 @@ static bool ensure(renderer_set *r, renderer_id id, const gpu_scene *gs)
     if (id == RENDERER_DEFERRED_TILED)
         return ensure_tiled(r, gs);
     if (id == RENDERER_FORWARD_PLUS || id == RENDERER_DEFERRED_CLUSTERED) {
-        /* Light assignment on the CPU, on every context: the compute passes make the same lists, and
-         * on llvmpipe they were measured no faster on the city (faster on the default scene). */
-        if (!r->have_clusters && !(r->have_clusters = clusters_create(&r->clusters, NULL)))
+        /* Light assignment as chapter 11 makes it by default: by compute shaders where the context
+         * has them (the same lists as the CPU's, chapters.11_assign_same_*), else on the CPU. */
+        const clusters_desc lists = {.compute = renderer_have_compute()};
+        if (!r->have_clusters && !(r->have_clusters = clusters_create(&r->clusters, &lists)))
             return false;
         if (id == RENDERER_FORWARD_PLUS) /* a scene with glass goes through forward's linear frame */
             return gs->transparent_count == 0 || r->have_forward || (r->have_forward = forward_create(&r->fwd));
