@@ -70,22 +70,6 @@ static struct {
     long edge_pixels;
 } state;
 
-/* The largest sample count every target here can have; a larger --samples is refused. */
-static bool samples_allowed(int n)
-{
-    GLint max_samples = 0, max_color = 0, max_depth = 0;
-    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-    glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &max_color);
-    glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_depth);
-    int max = max_samples < max_color ? max_samples : max_color;
-    max = max < max_depth ? max : max_depth;
-    if (n <= max && n <= MSAA_MAX_SAMPLES)
-        return true;
-    log_error("--samples %d: this context allows at most %d (GL_MAX_SAMPLES %d, GL_MAX_COLOR_TEXTURE_SAMPLES %d, "
-              "GL_MAX_DEPTH_TEXTURE_SAMPLES %d)", n, max, max_samples, max_color, max_depth);
-    return false;
-}
-
 static bool make_targets(app *a)
 {
     fbo_destroy(&state.msaa);
@@ -127,7 +111,7 @@ static bool read_samples(void)
 static bool init(app *a)
 {
     double n = 4;
-    if (!app_extra_number(a, "samples", 1, 1 << 20, &n) || !samples_allowed((int)n))
+    if (!app_extra_number(a, "samples", 1, 1 << 20, &n) || !fbo_samples_supported((int)n, MSAA_MAX_SAMPLES, "--samples"))
         return false;
     state.samples = (int)n;
     char defines[96];

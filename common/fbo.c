@@ -119,3 +119,19 @@ bool fbo_read_rgba8(const fbo *f, int attachment, unsigned char *rgba)
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return gl_check("fbo_read_rgba8");
 }
+
+bool fbo_samples_supported(int n, int cap, const char *what)
+{
+    GLint max_samples = 0, max_color = 0, max_depth = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &max_color);
+    glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_depth);
+    int max = max_samples < max_color ? max_samples : max_color;
+    max = max < max_depth ? max : max_depth;
+    max = max < cap ? max : cap;
+    if (n <= max)
+        return true;
+    log_error("%s %d: this context allows at most %d (GL_MAX_SAMPLES %d, GL_MAX_COLOR_TEXTURE_SAMPLES %d, "
+              "GL_MAX_DEPTH_TEXTURE_SAMPLES %d)", what, n, max, max_samples, max_color, max_depth);
+    return false;
+}

@@ -5,6 +5,10 @@
  *   fbo_status_name(status)               "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT", ...
  *   fbo_read_rgba8(fbo, attachment, rgba) read a colour attachment as width x height RGBA bytes,
  *                                         in GL's row order (bottom row first)
+ *   fbo_samples_supported(n, cap, what)   whether colour and depth textures of n samples can be made
+ *                                         (GL_MAX_SAMPLES, GL_MAX_COLOR_TEXTURE_SAMPLES and
+ *                                         GL_MAX_DEPTH_TEXTURE_SAMPLES, and the caller's cap); if not,
+ *                                         one line naming `what`, the largest count and the three limits
  *
  * desc.shared_depth attaches an existing depth texture instead of making one, so a lighting
  * pass can depth-test against the geometry pass's depth. desc.samples > 1 makes every attachment a
@@ -43,5 +47,6 @@ bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height);
 void fbo_destroy(fbo *f);
 const char *fbo_status_name(GLenum status);
 bool fbo_read_rgba8(const fbo *f, int attachment, unsigned char *rgba);
+bool fbo_samples_supported(int n, int cap, const char *what);
 
 #endif
