@@ -120,18 +120,8 @@ function(chapter_10_tests)
     set_tests_properties(golden.10_work PROPERTIES LABELS golden SKIP_RETURN_CODE 77 TIMEOUT 300)
   endif()
 
-  # --path compute on a context without compute shaders: one clear line, exit 1; the default falls
-  # back to the GL 3.3 path (simulated with COURSE_NO_COMPUTE=1).
-  add_test(NAME chapters.10_no_compute
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_no_compute.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/10_no_compute path
-    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-  set_tests_properties(chapters.10_no_compute PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
-  # The L key switches --path at run time (and stays on the CPU without compute shaders).
-  add_test(NAME chapters.10_path_key
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_compute_key.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/10_path_key
-            path "tile lists"
-    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-  set_tests_properties(chapters.10_path_key PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  # --path: compute asked for without compute shaders, and the key L (golden.cmake).
+  course_compute_path_tests(10 ${C} path "tile lists")
   # The compute shaders validate as GLSL 4.30 in shaders.glslang (tests/run_glslang.sh).
 
   # Bad option values are refused with a message naming the option.

@@ -84,19 +84,8 @@ function(chapter_11_tests)
         ${C} --renderer ${renderer} --assign cpu ${args} VS ${C} --renderer ${renderer} --assign compute ${args})
     endforeach()
   endforeach()
-  # --assign compute on a context without compute shaders: one clear line, exit 1; the default falls
-  # back to the CPU (simulated with COURSE_NO_COMPUTE=1).
-  add_test(NAME chapters.11_no_compute
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_no_compute.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/11_no_compute
-            assign
-    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-  set_tests_properties(chapters.11_no_compute PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
-  # The L key switches --assign at run time (and stays on the CPU without compute shaders).
-  add_test(NAME chapters.11_assign_key
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_compute_key.sh $<TARGET_FILE:${C}> ${COURSE_TEST_OUT}/11_assign_key
-            assign "light assignment"
-    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-  set_tests_properties(chapters.11_assign_key PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  # --assign: compute asked for without compute shaders, and the key L (golden.cmake).
+  course_compute_path_tests(11 ${C} assign "light assignment")
 
   # The work: at most 3x the ideal (pixel, light) pairs, never fewer; the chapter and the benchmark's
   # two renderers count the same.

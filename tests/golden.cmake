@@ -87,3 +87,20 @@ function(course_overdraw_count_test name claim)
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(overdraw.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
 endfunction()
+
+# A chapter's choice between compute shaders and its GL 3.3 path (--OPTION compute|cpu, the key L):
+# chapters.NAME_no_compute, where compute is asked for on a context without it (one clear line,
+# exit 1; the default falls back; simulated with COURSE_NO_COMPUTE=1), and chapters.NAME_key, where
+# L switches the path at run time with the same picture (WHAT: the log's name for the lists).
+function(course_compute_path_tests name binary option what)
+  add_test(NAME chapters.${name}_no_compute
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_no_compute.sh $<TARGET_FILE:${binary}>
+            ${COURSE_TEST_OUT}/${name}_no_compute ${option}
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  add_test(NAME chapters.${name}_key
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_compute_key.sh $<TARGET_FILE:${binary}>
+            ${COURSE_TEST_OUT}/${name}_key ${option} "${what}"
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.${name}_no_compute chapters.${name}_key PROPERTIES LABELS golden
+    SKIP_RETURN_CODE 77)
+endfunction()
