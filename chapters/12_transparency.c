@@ -76,7 +76,8 @@ static struct {
     gbuffer g;
     clusters c;          /* chapter 11's grid and lists */
     fbo accum;           /* linear radiance; depth: the G-buffer's */
-    GLuint present_program, query;
+    present_pass present; /* chapter 06's present pass */
+    GLuint query;
     debug_views views;   /* --view overdraw's count target and heat map */
     gpu_scene_order order;
 } state;
@@ -84,29 +85,18 @@ static struct {
 /* The accumulation target at the G-buffer's size, on its depth texture. */
 static bool accum_follow_gbuffer(void)
 {
-    const gbuffer *g = &state.g;
-    if (state.accum.id && state.accum.depth == g->fbo.depth && state.accum.width == g->fbo.width &&
-        state.accum.height == g->fbo.height)
-        return true;
-    fbo_destroy(&state.accum);
-    const fbo_desc desc = {.color_formats = {GL_RGBA32F},
-                           .color_count = 1,
-                           .depth_format = GL_DEPTH_COMPONENT32F,
-                           .shared_depth = g->fbo.depth,
-                           .name = "linear radiance"};
-    return fbo_create(&state.accum, &desc, g->fbo.width, g->fbo.height);
+    return gbuffer_follow_target(&state.g, &state.accum, GL_RGBA32F, "linear radiance");
 }
 
 static bool init(app *a)
 {
     state.order = strcmp(app_extra(a, "sort"), "none") == 0 ? GPU_SCENE_SCENE_ORDER : GPU_SCENE_BACK_TO_FRONT;
     a->pass_state = &glass_front_pass; /* the overlay shows it */
-    state.present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
     state.query = gl_query_create();
     /* chapter 11's lists, made where it makes them by default: by compute shaders where the context
      * has them (the same lists as on the CPU, chapters.11_assign_same_*) */
     const clusters_desc lists = {.compute = renderer_have_compute()};
-    return state.present_program && gbuffer_create(&state.g, a->width, a->height) &&
+    return present_pass_create(&state.present) && gbuffer_create(&state.g, a->width, a->height) &&
            accum_follow_gbuffer() && clusters_create(&state.c, &lists) && debug_views_create(&state.views);
 }
 
@@ -141,16 +131,7 @@ static bool draw_overdraw(app *a)
 static bool present(app *a)
 {
     frame_timer_mark("present");
-    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
-    glViewport(0, 0, a->width, a->height);
-    glUseProgram(state.present_program);
-    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
-    glBindTexture(GL_TEXTURE_2D, state.accum.color[0]);
-    glActiveTexture(GL_TEXTURE0);
-    glUniform1i(glGetUniformLocation(state.present_program, "u_accum"), SHADER_UNIT_IMAGE);
-    glUniform1i(glGetUniformLocation(state.present_program, "u_tonemap"), SHADER_TONEMAP_NONE);
-    glUniform1i(glGetUniformLocation(state.present_program, "u_view"), SHADER_VIEW_LIT);
-    gl_draw_fullscreen();
+    present_pass_draw(&state.present, state.accum.color[0], a->target.id, a->width, a->height, NULL);
     return gl_check("12 present");
 }
 
@@ -198,7 +179,7 @@ static void cleanup(app *a)
     debug_views_destroy(&state.views);
     clusters_destroy(&state.c);
     gl_query_destroy(&state.query);
-    gl_program_destroy(&state.present_program);
+    present_pass_destroy(&state.present);
     fbo_destroy(&state.accum);
     gbuffer_destroy(&state.g);
 }

@@ -66,7 +66,8 @@ static struct {
     forward fwd;
     fbo msaa; /* forward's frame: RGBA16F + depth, multisampled */
     fbo lit;  /* the resolved linear picture (RGBA16F) + the edge stencil */
-    GLuint edge_program, shade_program, resolve_program, present_program, edge_query;
+    GLuint edge_program, shade_program, resolve_program, edge_query;
+    present_pass present; /* chapter 06's present pass */
     long edge_pixels;
 } state;
 
@@ -105,6 +106,14 @@ static bool read_samples(void)
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
+    /* They, and the edges view's colour, are the same every frame: set once, in both programs. */
+    const GLuint programs[] = {state.shade_program, state.edge_program};
+    for (int i = 0; i < 2 && programs[i]; i++) {
+        glUseProgram(programs[i]);
+        glUniform2fv(glGetUniformLocation(programs[i], "u_sample_offsets"), state.samples, state.offsets);
+        glUniform2fv(glGetUniformLocation(programs[i], "u_mean_offset"), 1, state.mean);
+        glUniform4f(glGetUniformLocation(programs[i], "u_edge_colour"), 1.0f, 0.0f, 1.0f, 1.0f);
+    }
     return gl_check("13 sample positions");
 }
 
@@ -125,12 +134,11 @@ static bool init(app *a)
         state.edge_program = gl_program_load("fullscreen.vert", "msaa_deferred.frag", edge_defines);
     }
     state.resolve_program = gl_program_load("fullscreen.vert", "msaa_resolve.frag", defines);
-    state.present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
     state.edge_query = gl_query_create();
     a->pass_state = &pixel_pass; /* the overlay shows it */
     const clusters_desc lists = {.compute = renderer_have_compute()}; /* chapter 11's default */
     return state.shade_program && (state.samples == 1 || state.edge_program) && state.resolve_program &&
-           state.present_program &&
+           present_pass_create(&state.present) &&
            gbuffer_create_with(&state.g, a->width, a->height, &(gbuffer_desc){.samples = state.samples}) &&
            read_samples() && clusters_create(&state.c, &lists) && forward_create(&state.fwd) && make_targets(a);
 }
@@ -144,19 +152,13 @@ static bool resize(app *a)
 static void draw_shade_pass(const app *a, int pass, const gl_pass_state *s)
 {
     const GLuint p = pass == PASS_EDGES ? state.edge_program : state.shade_program;
-    const mat4 *view = (const mat4 *)a->gs.view.view; /* row 2: view depth = -dot(row, (p, 1)) */
     gl_pass_state_apply(s);
     glUseProgram(p);
     gpu_scene_bind_lights(&a->gs, p, SHADER_UNIT_LIGHTS);
     gbuffer_bind_textures(&state.g, &a->gs, p, SHADER_UNIT_GBUFFER);
     clusters_bind(&state.c, p, SHADER_UNIT_LIGHT_INDEX); /* and the unit after it */
-    glUniform4f(glGetUniformLocation(p, "u_cluster_depth_row"), (*view)[0][2], (*view)[1][2], (*view)[2][2],
-                (*view)[3][2]);
     glUniform1i(glGetUniformLocation(p, "u_pass"), pass);
     glUniform1i(glGetUniformLocation(p, "u_show_edges"), app_view_is(a, "edges"));
-    glUniform4f(glGetUniformLocation(p, "u_edge_colour"), 1.0f, 0.0f, 1.0f, 1.0f);
-    glUniform2fv(glGetUniformLocation(p, "u_sample_offsets"), state.samples, state.offsets);
-    glUniform2fv(glGetUniformLocation(p, "u_mean_offset"), 1, state.mean);
     gl_draw_fullscreen();
 }
 
@@ -227,17 +229,7 @@ static bool present(app *a, GLuint target, bool timed)
 {
     if (timed)
         frame_timer_mark("present");
-    const GLuint p = state.present_program;
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, a->width, a->height);
-    glUseProgram(p);
-    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
-    glBindTexture(GL_TEXTURE_2D, state.lit.color[0]);
-    glUniform1i(glGetUniformLocation(p, "u_accum"), SHADER_UNIT_IMAGE);
-    glUniform1i(glGetUniformLocation(p, "u_tonemap"), SHADER_TONEMAP_NONE);
-    glUniform1f(glGetUniformLocation(p, "u_exposure"), 1.0f);
-    glUniform1i(glGetUniformLocation(p, "u_view"), SHADER_VIEW_LIT);
-    gl_draw_fullscreen();
+    present_pass_draw(&state.present, state.lit.color[0], target, a->width, a->height, NULL);
     return gl_check("13 present");
 }
 
@@ -279,7 +271,7 @@ static void cleanup(app *a)
     gl_program_destroy(&state.edge_program);
     gl_program_destroy(&state.shade_program);
     gl_program_destroy(&state.resolve_program);
-    gl_program_destroy(&state.present_program);
+    present_pass_destroy(&state.present);
     fbo_destroy(&state.msaa);
     fbo_destroy(&state.lit);
     forward_destroy(&state.fwd);

@@ -31,22 +31,25 @@ static void print_choices(FILE *stream, const char *const *choices)
 const char *const cli_gbuffer_layouts[CLI_GBUFFER_LAYOUT_COUNT + 1] = {
     "reference", "compact", "compact-d24s8", "reversed-z", "linear-albedo", "oct8", "oct16", NULL};
 
-/* Words of `text` from column HELP_COLUMN, wrapped before HELP_WIDTH as the options above are. */
+/* Words of `text`, from `column` of a line that holds the option's name (padded: at_start, no space
+ * before the first word), wrapped before HELP_WIDTH onto lines that start at HELP_COLUMN. */
 #define HELP_COLUMN 27
 #define HELP_WIDTH 92
-static void print_wrapped(FILE *stream, const char *text, int column)
+static void print_wrapped(FILE *stream, const char *text, int column, bool at_start)
 {
+    bool line_start = at_start;
     while (*text) {
         int word = (int)strcspn(text, " ");
-        if (column > HELP_COLUMN && column + 1 + word > HELP_WIDTH) {
+        if (!line_start && column + 1 + word > HELP_WIDTH) {
             fprintf(stream, "\n%*s", HELP_COLUMN, "");
             column = HELP_COLUMN;
-        } else if (column > HELP_COLUMN) {
+        } else if (!line_start) {
             fputc(' ', stream);
             column++;
         }
         fprintf(stream, "%.*s", word, text);
         column += word;
+        line_start = false;
         text += word;
         text += strspn(text, " ");
     }
@@ -65,9 +68,10 @@ static void print_extra(FILE *stream, const cli_extra *e)
     if (e->default_value && n < (int)sizeof text)
         snprintf(text + n, sizeof text - (size_t)n, " (default %s)", e->default_value);
     int column = fprintf(stream, "  --%s %s", e->name, e->metavar);
-    if (column < HELP_COLUMN)
+    bool padded = column < HELP_COLUMN; /* else one space follows the name */
+    if (padded)
         column += fprintf(stream, "%*s", HELP_COLUMN - column, "");
-    print_wrapped(stream, text, HELP_COLUMN - 1 < column ? column : HELP_COLUMN);
+    print_wrapped(stream, text, column, padded);
 }
 
 void cli_print_help(const cli_desc *desc, FILE *stream)

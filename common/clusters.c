@@ -66,6 +66,10 @@ bool clusters_assign(clusters *c, const gpu_scene *gs)
     const frame_view *v = &gs->view;
     cluster_grid_init(&c->grid, v->width, v->height, c->desc.tile_size, c->desc.slices,
                       (const float *)v->proj, v->near_plane, v->far_plane);
+    /* Row 2 of the view matrix (cglm is column-major): the view depth of p is -dot(row, (p, 1)). */
+    const mat4 *m = (const mat4 *)v->view;
+    for (int i = 0; i < 4; i++)
+        c->depth_row[i] = (*m)[i][2];
     if (gs->light_count > c->sphere_cap) {
         float(*s)[4] = realloc(c->spheres, (size_t)gs->light_count * sizeof *s);
         if (!s) {
@@ -119,14 +123,7 @@ void clusters_bind(const clusters *c, GLuint program, int first_unit)
     glUniform3i(glGetUniformLocation(program, "u_cluster_grid"), g->tiles_x, g->tiles_y, g->slices);
     glUniform1i(glGetUniformLocation(program, "u_cluster_tile"), g->tile_size);
     glUniform2f(glGetUniformLocation(program, "u_cluster_slicing"), g->near_plane, g->log_scale);
-}
-
-/* Row 2 of the view matrix (cglm is column-major): the view depth of p is -dot(row, (p, 1)). */
-static void bind_depth_row(GLuint program, const gpu_scene *gs)
-{
-    mat4 *m = (mat4 *)gs->view.view;
-    glUniform4f(glGetUniformLocation(program, "u_cluster_depth_row"), (*m)[0][2], (*m)[1][2], (*m)[2][2],
-                (*m)[3][2]);
+    glUniform4fv(glGetUniformLocation(program, "u_cluster_depth_row"), 1, c->depth_row);
 }
 
 static GLuint program_once(GLuint *p, const char *vert, const char *frag, const char *defines)
@@ -167,7 +164,6 @@ static bool shade_forward(clusters *c, const gpu_scene *gs, const gl_pass_state 
     gpu_scene_bind_lights(gs, p, SHADER_UNIT_LIGHTS);
     gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS);
     clusters_bind(c, p, SHADER_UNIT_LIGHT_INDEX); /* and the unit after it */
-    bind_depth_row(p, gs);
     glUniform3fv(glGetUniformLocation(p, "u_eye"), 1, gs->view.eye);
     glUniform1i(glGetUniformLocation(p, "u_view_mode"), mode);
     glUniform1i(glGetUniformLocation(p, "u_output_linear"), linear);
@@ -192,7 +188,6 @@ static bool shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *gs, c
     gpu_scene_bind_lights(gs, p, SHADER_UNIT_LIGHTS);
     gbuffer_bind_textures(g, gs, p, SHADER_UNIT_GBUFFER);
     clusters_bind(c, p, SHADER_UNIT_LIGHT_INDEX); /* and the unit after it */
-    bind_depth_row(p, gs);
     glUniform1i(glGetUniformLocation(p, "u_view_mode"), mode);
     glUniform1i(glGetUniformLocation(p, "u_output_linear"), linear);
     gl_draw_fullscreen();
@@ -217,7 +212,6 @@ bool clusters_shade_glass(clusters *c, const gpu_scene *gs, const gl_pass_state 
     gpu_scene_bind_lights(gs, p, SHADER_UNIT_LIGHTS);
     gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS); /* and with them each object's opacity */
     clusters_bind(c, p, SHADER_UNIT_LIGHT_INDEX);       /* and the unit after it */
-    bind_depth_row(p, gs);
     glUniform3fv(glGetUniformLocation(p, "u_eye"), 1, gs->view.eye);
     glUniform1i(glGetUniformLocation(p, "u_view_mode"), view_mode(view));
     gpu_scene_draw_transparent(gs, p, order, passes, pass_count);

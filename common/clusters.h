@@ -13,7 +13,8 @@
  *                                     that differs
  *   clusters_bind(c, program, first_unit)
  *                                     u_cluster_ranges and u_cluster_lights on first_unit and
- *                                     first_unit + 1, and the grid uniforms of shaders/clusters.glsl
+ *                                     first_unit + 1, and the uniforms of shaders/clusters.glsl for the
+ *                                     grid and the view of the last clusters_assign
  *   clusters_draw_depth(c, gs)        Forward+'s depth pre-pass: every opaque object, depth only,
  *                                     with the caller's depth state (forward.vert + depth_only.frag);
  *                                     the caller names the pass in the frame timer
@@ -76,6 +77,7 @@ typedef struct clusters_desc {
 typedef struct clusters {
     clusters_desc desc;
     cluster_grid grid;
+    float depth_row[4]; /* row 2 of the last assigned view's matrix: view depth = -dot(row, (p, 1)) */
     cluster_lists lists;    /* the CPU's lists */
     cluster_lists readback; /* desc.check: the compute passes' lists, read back */
     cluster_assign_gpu gpu;

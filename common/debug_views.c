@@ -14,8 +14,7 @@ bool debug_views_create(debug_views *dv)
 {
     memset(dv, 0, sizeof *dv);
     dv->wire_program = gl_program_load("volume_wire.vert", "volume_wire.frag", NULL);
-    dv->present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
-    if (!dv->wire_program || !dv->present_program ||
+    if (!dv->wire_program || !present_pass_create(&dv->present) ||
         !light_volumes_mesh_create(&dv->sphere, &dv->mesh_scale)) {
         debug_views_destroy(dv);
         return false;
@@ -29,7 +28,7 @@ bool debug_views_create(debug_views *dv)
 void debug_views_destroy(debug_views *dv)
 {
     gl_program_destroy(&dv->wire_program);
-    gl_program_destroy(&dv->present_program);
+    present_pass_destroy(&dv->present);
     mesh_destroy(&dv->sphere);
     fbo_destroy(&dv->counts);
     memset(dv, 0, sizeof *dv);
@@ -38,16 +37,7 @@ void debug_views_destroy(debug_views *dv)
 /* The count target follows the G-buffer's size and depth texture (recreated after a resize). */
 static bool follow_gbuffer(debug_views *dv, const gbuffer *g)
 {
-    if (dv->counts.id && dv->counts.depth == g->fbo.depth && dv->counts.width == g->fbo.width &&
-        dv->counts.height == g->fbo.height)
-        return true;
-    fbo_destroy(&dv->counts);
-    const fbo_desc desc = {.color_formats = {GL_R32F},
-                           .color_count = 1,
-                           .depth_format = GL_DEPTH_COMPONENT32F,
-                           .shared_depth = g->fbo.depth,
-                           .name = "overdraw count"};
-    return fbo_create(&dv->counts, &desc, g->fbo.width, g->fbo.height);
+    return gbuffer_follow_target(g, &dv->counts, GL_R32F, "overdraw count");
 }
 
 bool debug_views_begin_overdraw(debug_views *dv, const gbuffer *g, const gl_pass_state *pass,
@@ -70,16 +60,8 @@ bool debug_views_begin_overdraw(debug_views *dv, const gbuffer *g, const gl_pass
 bool debug_views_end_overdraw(const debug_views *dv, GLuint target)
 {
     frame_timer_mark("present");
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, dv->counts.width, dv->counts.height);
-    glUseProgram(dv->present_program);
-    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
-    glBindTexture(GL_TEXTURE_2D, dv->counts.color[0]);
-    glUniform1i(glGetUniformLocation(dv->present_program, "u_accum"), SHADER_UNIT_IMAGE);
-    glUniform1i(glGetUniformLocation(dv->present_program, "u_view"), SHADER_VIEW_OVERDRAW);
-    gl_draw_fullscreen();
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glBindVertexArray(0);
+    present_pass_draw(&dv->present, dv->counts.color[0], target, dv->counts.width, dv->counts.height,
+                      &(present_pass_options){.view = SHADER_VIEW_OVERDRAW});
     return gl_check("debug_views_end_overdraw");
 }
 

@@ -29,6 +29,7 @@
 #include "gl_util.h"
 #include "gpu_scene.h"
 #include "mesh.h"
+#include "present_pass.h"
 
 /* How the volumes view sizes the volumes; zero is chapters 05-07's. */
 typedef struct debug_views_volumes {
@@ -37,7 +38,8 @@ typedef struct debug_views_volumes {
 } debug_views_volumes;
 
 typedef struct debug_views {
-    GLuint wire_program, present_program;
+    GLuint wire_program;
+    present_pass present; /* the counts as the heat map (accum_present.frag) */
     GLint u_view_proj, u_mesh_scale, u_fixed_radius; /* wire_program's */
     mesh sphere;
     float mesh_scale; /* 1 / inradius */

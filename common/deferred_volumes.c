@@ -10,17 +10,10 @@
  * against the scene without a copy (depth writes stay off while the shader also reads it). */
 static bool follow_gbuffer(deferred_volumes *dv, const gbuffer *g, GLenum format)
 {
-    if (dv->accum.id && dv->accum.depth == g->fbo.depth && dv->accum.width == g->fbo.width &&
-        dv->accum.height == g->fbo.height && dv->accum_format == format)
-        return true;
-    fbo_destroy(&dv->accum);
-    const fbo_desc desc = {.color_formats = {format},
-                           .color_count = 1,
-                           .depth_format = GL_DEPTH_COMPONENT32F,
-                           .shared_depth = g->fbo.depth,
-                           .name = "light accumulation"};
+    if (dv->accum_format != format)
+        fbo_destroy(&dv->accum);
     dv->accum_format = format;
-    return fbo_create(&dv->accum, &desc, g->fbo.width, g->fbo.height);
+    return gbuffer_follow_target(g, &dv->accum, format, "light accumulation");
 }
 
 bool deferred_volumes_create(deferred_volumes *dv, const gbuffer *g, GLenum accum_format)
@@ -31,8 +24,7 @@ bool deferred_volumes_create(deferred_volumes *dv, const gbuffer *g, GLenum accu
         deferred_volumes_destroy(dv);
         return false;
     }
-    dv->present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
-    if (!dv->present_program) {
+    if (!present_pass_create(&dv->present)) {
         deferred_volumes_destroy(dv);
         return false;
     }
@@ -40,10 +32,6 @@ bool deferred_volumes_create(deferred_volumes *dv, const gbuffer *g, GLenum accu
         deferred_volumes_destroy(dv);
         return false;
     }
-    dv->u_accum = glGetUniformLocation(dv->present_program, "u_accum");
-    dv->u_tonemap = glGetUniformLocation(dv->present_program, "u_tonemap");
-    dv->u_exposure = glGetUniformLocation(dv->present_program, "u_exposure");
-    dv->u_view = glGetUniformLocation(dv->present_program, "u_view");
     dv->query = gl_query_create();
     return gl_check("deferred_volumes_create");
 }
@@ -52,7 +40,7 @@ void deferred_volumes_destroy(deferred_volumes *dv)
 {
     light_volumes_destroy(&dv->lv);
     fbo_destroy(&dv->accum);
-    gl_program_destroy(&dv->present_program);
+    present_pass_destroy(&dv->present);
     gl_query_destroy(&dv->query);
     memset(dv, 0, sizeof *dv);
 }
@@ -65,18 +53,8 @@ bool deferred_volumes_resize(deferred_volumes *dv, const gbuffer *g)
 void deferred_volumes_present(const deferred_volumes *dv, GLuint target, const deferred_volumes_frame *f)
 {
     frame_timer_mark("present");
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, dv->accum.width, dv->accum.height);
-    glUseProgram(dv->present_program);
-    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
-    glBindTexture(GL_TEXTURE_2D, dv->accum.color[0]);
-    glUniform1i(dv->u_accum, SHADER_UNIT_IMAGE);
-    glUniform1i(dv->u_tonemap, (int)f->tonemap);
-    glUniform1f(dv->u_exposure, f->exposure > 0.0f ? f->exposure : 1.0f);
-    glUniform1i(dv->u_view, (int)f->view);
-    gl_draw_fullscreen();
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glBindVertexArray(0);
+    const present_pass_options o = {.tonemap = (int)f->tonemap, .exposure = f->exposure, .view = (int)f->view};
+    present_pass_draw(&dv->present, dv->accum.color[0], target, dv->accum.width, dv->accum.height, &o);
 }
 
 bool deferred_volumes_render(deferred_volumes *dv, const gbuffer *g, const gpu_scene *gs, GLuint target,

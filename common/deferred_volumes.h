@@ -26,6 +26,7 @@
 
 #include "fbo.h"
 #include "light_volumes.h"
+#include "present_pass.h"
 
 typedef enum deferred_volumes_tonemap {
     DEFERRED_VOLUMES_TONEMAP_NONE = SHADER_TONEMAP_NONE,         /* clamp at 1: forward's transform */
@@ -46,8 +47,7 @@ typedef struct deferred_volumes {
     light_volumes lv;
     fbo accum; /* colour: the sum of the lights; depth: the G-buffer's */
     GLenum accum_format;
-    GLuint present_program;
-    GLint u_accum, u_tonemap, u_exposure, u_view;
+    present_pass present; /* accum_present.frag */
     GLuint query;
     long shaded_pixels;
 } deferred_volumes;

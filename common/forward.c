@@ -39,7 +39,7 @@ void forward_destroy(forward *f)
     gl_program_destroy(&f->depth_program);
     gl_program_destroy(&f->linear_program);
     gl_program_destroy(&f->glass_program);
-    gl_program_destroy(&f->present_program);
+    present_pass_destroy(&f->present);
     fbo_destroy(&f->hdr);
     gl_buffer_destroy(&f->list_buffer);
     gl_texture_destroy(&f->list_texture);
@@ -189,9 +189,7 @@ static void copy_depth(GLuint from, GLuint to, int width, int height)
 /* f->hdr at the view's size, and the present program (scenes with glass only). */
 static bool hdr_follow_view(forward *f, int width, int height)
 {
-    if (!f->present_program)
-        f->present_program = gl_program_load("fullscreen.vert", "accum_present.frag", NULL);
-    if (!f->present_program)
+    if (!f->present.program && !present_pass_create(&f->present))
         return false;
     if (f->hdr.id && f->hdr.width == width && f->hdr.height == height)
         return true;
@@ -219,18 +217,8 @@ bool forward_draw_linear(forward *f, const gpu_scene *gs, bool (*draw)(void *use
         return false;
 
     frame_timer_mark("present");
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
     gl_pass_state_apply(&(gl_pass_state){0}); /* no depth test: the target's depth is copied below */
-    glUseProgram(f->present_program);
-    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_IMAGE);
-    glBindTexture(GL_TEXTURE_2D, f->hdr.color[0]);
-    glUniform1i(glGetUniformLocation(f->present_program, "u_accum"), SHADER_UNIT_IMAGE);
-    glUniform1i(glGetUniformLocation(f->present_program, "u_tonemap"), SHADER_TONEMAP_NONE);
-    glUniform1f(glGetUniformLocation(f->present_program, "u_exposure"), 1.0f);
-    glUniform1i(glGetUniformLocation(f->present_program, "u_view"), SHADER_VIEW_LIT);
-    gl_draw_fullscreen();
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glBindVertexArray(0);
+    present_pass_draw(&f->present, f->hdr.color[0], target, w, h, NULL);
     copy_depth(f->hdr.id, target, w, h);
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     gl_pass_state_reset();

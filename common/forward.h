@@ -53,6 +53,7 @@
 
 #include "fbo.h"
 #include "gpu_scene.h"
+#include "present_pass.h"
 
 typedef struct forward_options {
     bool prepass;
@@ -78,7 +79,8 @@ extern const gl_pass_state *const forward_glass_passes[2];
 
 typedef struct forward {
     GLuint program, depth_program, linear_program;
-    GLuint glass_program, present_program; /* built on first use: scenes with transparent objects */
+    GLuint glass_program;                  /* built on first use: scenes with transparent objects */
+    present_pass present;                       /* the same */
     fbo hdr;                               /* such a scene's frame in linear radiance (RGBA32F) */
     GLuint list_buffer, list_texture;
     GLuint query;

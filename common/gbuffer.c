@@ -282,6 +282,20 @@ void gbuffer_attach_stencil(const gbuffer *g, GLuint framebuffer)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+bool gbuffer_follow_target(const gbuffer *g, fbo *target, GLenum format, const char *name)
+{
+    if (target->id && target->depth == g->fbo.depth && target->width == g->fbo.width &&
+        target->height == g->fbo.height)
+        return true;
+    fbo_destroy(target);
+    const fbo_desc desc = {.color_formats = {format},
+                           .color_count = 1,
+                           .depth_format = GL_DEPTH_COMPONENT32F,
+                           .shared_depth = g->fbo.depth,
+                           .name = name};
+    return fbo_create(target, &desc, g->fbo.width, g->fbo.height);
+}
+
 void gbuffer_destroy(gbuffer *g)
 {
     fbo_destroy(&g->fbo);

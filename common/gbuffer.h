@@ -8,6 +8,12 @@
  *                                        attach g's stencil to `framebuffer` (one that borrows g's
  *                                        depth texture, like the light accumulation buffer), so a
  *                                        pass drawing there tests the stencil; g made with .stencil
+ *   gbuffer_follow_target(g, target, format, name)
+ *                                        a target of one `format` colour texture on g's depth
+ *                                        texture, at g's size (a lighting pass's sum, a count), so
+ *                                        that a pass drawing there depth-tests against the scene;
+ *                                        made when `target` has none, remade only when g's depth or
+ *                                        size changed since (a changed format: destroy it first)
  *   gbuffer_resize(g, width, height)     recreate the textures (window resize)
  *   gbuffer_destroy(g)
  *   gbuffer_render(g, gs)                geometry pass into g's own framebuffer: every object once,
@@ -151,6 +157,7 @@ typedef struct gbuffer {
 bool gbuffer_create(gbuffer *g, int width, int height);
 bool gbuffer_create_with(gbuffer *g, int width, int height, const gbuffer_desc *desc);
 void gbuffer_attach_stencil(const gbuffer *g, GLuint framebuffer);
+bool gbuffer_follow_target(const gbuffer *g, fbo *target, GLenum format, const char *name);
 bool gbuffer_resize(gbuffer *g, int width, int height);
 void gbuffer_destroy(gbuffer *g);
 bool gbuffer_render(gbuffer *g, const gpu_scene *gs);

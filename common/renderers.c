@@ -257,9 +257,9 @@ static bool draw_stencil(renderer_stencil *st, const gpu_scene *gs, GLuint targe
 static const gl_pass_state forward_plus_equal = {.cull = GL_BACK, .depth_func = GL_EQUAL};
 
 /* Forward+ in linear radiance, then the glass over it with the same lists (chapter 12). */
-static bool forward_plus_linear(void *clusters_, const gpu_scene *gs)
+static bool forward_plus_linear(void *user, const gpu_scene *gs)
 {
-    clusters *c = clusters_;
+    clusters *c = user;
     return clusters_shade_forward(c, gs, &forward_plus_equal, CLUSTERS_VIEW_LINEAR) &&
            clusters_shade_glass(c, gs, forward_glass_passes, 2, GPU_SCENE_BACK_TO_FRONT, CLUSTERS_VIEW_LINEAR);
 }

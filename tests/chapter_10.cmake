@@ -44,10 +44,7 @@ function(chapter_10_tests)
   foreach(case "default|" "lights1024|--lights@1024" "city_800|--size@800x800@--scene@${CITY}"
                "spots|--scene@${SPOTS}" "tiles_view|--lights@256@--view@tiles"
                "overdraw_view|--lights@256@--view@overdraw" "crowd|--scene@${S}/tile_crowd.scene")
-    string(REPLACE "|" ";" parts "${case}")
-    list(GET parts 0 name)
-    list(GET parts 1 args)
-    string(REPLACE "@" ";" args "${args}")
+    course_case("${case}" name args)
     course_agreement_test(10_paths_same_${name} 0 0 ${C} --path compute ${args} VS ${C} --path cpu ${args})
   endforeach()
 
@@ -67,10 +64,7 @@ function(chapter_10_tests)
                "crowd_tile_lights_16|--scene@${S}/tile_crowd.scene@--tile-lights@16"
                "size17x17|--lights@256@--size@17x17" "size33x7|--lights@256@--size@33x7" "size1x1|--size@1x1"
                "windowed|--lights@64@--falloff@windowed" "time3|--lights@64@--time@3")
-    string(REPLACE "|" ";" parts "${case}")
-    list(GET parts 0 name)
-    list(GET parts 1 args)
-    string(REPLACE "@" ";" args "${args}")
+    course_case("${case}" name args)
     string(REPLACE "--tile-lights;16" "" fwd_args "${args}")
     foreach(path compute cpu)
       # forward: time3 and a few others put a cut-off sphere through a pixel or two (see above)
@@ -95,17 +89,10 @@ function(chapter_10_tests)
   # Kept below the heat map's saturation (16): the scene's 8 lights, a smaller cut-off, 7 spots.
   if(TARGET heat_count)
     foreach(case "default|" "cutoff_0.1|--cutoff@0.1" "spots|--scene@${SPOTS}" "inside|--scene@${S}/inside_volume.scene")
-      string(REPLACE "|" ";" parts "${case}")
-      list(GET parts 0 name)
-      list(GET parts 1 args)
-      string(REPLACE "@" ";" args "${args}")
+      course_case("${case}" name args)
       foreach(path compute cpu)
-        add_test(NAME overdraw.10_sum_${name}_${path}
-          COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_overdraw_count.sh $<TARGET_FILE:heat_count>
-                  ${COURSE_TEST_OUT}/overdraw_10_${name}_${path}.png lit-run
-                  -- $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} --path ${path} ${args}
-          WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-        set_tests_properties(overdraw.10_sum_${name}_${path} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+        course_overdraw_count_test(10_sum_${name}_${path} lit-run
+          $<TARGET_FILE:${C}> ${COURSE_RENDER_ARGS} --path ${path} ${args})
       endforeach()
     endforeach()
   endif()

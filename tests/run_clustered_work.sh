@@ -13,15 +13,10 @@
 #   3. the chapter binary counts what the benchmark's copy counts.
 # Exit 77 (no GL context) passes through as a skip.
 set -u
+. "$(dirname "$0")/work_lib.sh"
 bench=$1 chapter=$2 out=$3
 rm -rf "$out"
-mkdir -p "$out"
-"$bench" --scenes default,city --lights 1024,scene --renderers forward-plus,deferred-clustered \
-    --size 800x800 --frames 1 --warmup 0 --cutoffs 5 --cutoff-lights 64 --error-max-lights 0 --no-plots \
-    --out "$out" >"$out/stdout" 2>"$out/stderr"
-rc=$?
-[ $rc -eq 77 ] && { echo "skip: no GL context"; exit 77; }
-[ $rc -ne 0 ] && { echo "FAIL: bench exited $rc"; cat "$out/stderr"; exit 1; }
+work_bench "$bench" "$out" default,city 1024,scene forward-plus,deferred-clustered
 
 # CSV columns: 1 sweep, 2 scene, 3 renderer, 4 light_set, 5 lights, 19 ideal, 20 light_evals, 21 ratio.
 awk -F, '
@@ -48,9 +43,8 @@ END {
 
 for renderer in deferred forward-plus; do
     row=$([ $renderer = deferred ] && echo deferred-clustered || echo forward-plus)
-    want=$(awk -F, -v r=$row '$1 == "lights" && $2 == "default" && $3 == r && $5 == 1024 { print $20 }' "$out/bench.csv")
-    got=$("$chapter" --headless --size 800x800 --lights 1024 --frames 1 --bench --renderer $renderer |
-        sed -n 's/.*shaded_pixels=\([0-9-]*\).*/\1/p')
+    want=$(work_csv "$out" default $row 1024 20)
+    got=$(work_count "$chapter" --renderer $renderer)
     echo "chapter 11 --renderer $renderer, default, 1024 lights: $got evaluations; the benchmark's $want"
     [ -n "$want" ] && [ "$got" = "$want" ] || { echo "FAIL: the chapter counts $got, the benchmark $want"; exit 1; }
 done
