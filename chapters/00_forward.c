@@ -22,6 +22,7 @@
  * Read docs/00_forward.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "gl_util.h"
 #include "log.h"
 
@@ -64,9 +65,9 @@ static void log_lists(const app *a)
 
 static bool frame(app *a)
 {
-    if (app_renderer_is(a, "forward-plus")) /* chapter 11's Forward+, through the renderer table */
+    if (app_renderer_is(a, "forward-plus")) /* chapter 11's Forward+, through the runner */
         return app_render_forward(a);
-    const forward_options o = renderer_table[renderer_find(a->cli->renderers[a->renderer])].forward_options;
+    const forward_options o = *forward_variant_find(a->cli->renderers[a->renderer]);
     const gpu_scene *gs = &a->gs;
 
     /* 1. per-object light lists, on the CPU */
@@ -88,10 +89,15 @@ static bool frame(app *a)
     }
 
     /* 3. shading: every object, each fragment looping over its lights */
-    const forward_options shade = {.light_lists = o.light_lists, .count_pixels = a->count_pixels};
+    const forward_options shade = {
+        .light_lists = o.light_lists, .count_pixels = a->count_pixels, .linear_output = a->linear_output};
     if (!forward_draw_shaded(&state.fwd, gs, shade))
         return false;
     a->shaded_pixels = forward_shaded_pixels(&state.fwd);
+    a->lights_per_pixel = o.light_lists && a->scene.object_count > 0
+                              ? (double)state.fwd.list_entries / a->scene.object_count
+                              : gs->light_count; /* each shaded fragment loops over these */
+    a->linear_written = a->linear_output;
     gl_pass_state_reset();
     return gl_check("00 frame");
 }
@@ -102,8 +108,7 @@ static void cleanup(app *a)
     forward_destroy(&state.fwd);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .frame = frame, .cleanup = cleanup};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_00 = {.cli = &cli, .init = init, .frame = frame, .cleanup = cleanup};
+
+CHAPTER_MAIN(chapter_00)

@@ -10,6 +10,7 @@
  * Read docs/01_fbo_setup.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "gl_util.h"
 #include "log.h"
 
@@ -89,7 +90,7 @@ static bool frame(app *a)
         return app_render_forward(a);
 
     /* 1. draw the scene (chapter 00's forward renderer) into our framebuffer instead of the target */
-    if (!renderers_draw(&a->renderers, RENDERER_FORWARD, &a->gs, state.fbo, (renderer_draw_options){0}, NULL))
+    if (!app_forward_draw(&a->forward, "forward", &a->gs, state.fbo, (app_forward_options){0}, NULL))
         return false;
 
     /* 2. present: bind the colour texture and cover the target with one triangle */
@@ -113,8 +114,7 @@ static void cleanup(app *a)
     gl_program_destroy(&state.present_program);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_01 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+
+CHAPTER_MAIN(chapter_01)

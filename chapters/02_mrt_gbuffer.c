@@ -9,6 +9,7 @@
  * colour target) and read docs/02_mrt_gbuffer.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "deferred_fullscreen.h"
 #include "gbuffer.h"
 #include "gl_util.h"
@@ -103,8 +104,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.gbuf);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_02 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+
+CHAPTER_MAIN(chapter_02)

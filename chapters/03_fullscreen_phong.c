@@ -27,6 +27,7 @@
  * Read docs/03_fullscreen_phong.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "debug_views.h"
 #include "deferred_fullscreen.h"
 #include "gbuffer.h"
@@ -93,6 +94,7 @@ static bool frame(app *a)
     if (!deferred_fullscreen_render(pass, &state.gbuf, &a->gs, a->target.id, options))
         return false;
     a->shaded_pixels = deferred_fullscreen_shaded_pixels(pass);
+    a->lights_per_pixel = a->gs.light_count; /* every covered pixel loops over every light */
     /* the volumes view: each light's sphere at its radius, as lines over the picture */
     return !app_view_is(a, "volumes") ||
            debug_views_draw_volumes(&state.views, &state.gbuf, &a->gs, a->target.id, NULL);
@@ -108,8 +110,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.gbuf);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_03 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+
+CHAPTER_MAIN(chapter_03)

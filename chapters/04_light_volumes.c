@@ -25,6 +25,7 @@
  * lines. Read docs/04_light_volumes.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "debug_views.h"
 #include "gbuffer.h"
 #include "light_volumes.h"
@@ -145,9 +146,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                           .key = key};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_04 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+
+CHAPTER_MAIN(chapter_04)

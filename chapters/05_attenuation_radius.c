@@ -26,6 +26,7 @@
  * lines, at the solved radii). Read docs/05_attenuation_radius.md.
  */
 #include "app.h"
+#include "chapters.h"
 #include "debug_views.h"
 #include "gbuffer.h"
 #include "light_volumes.h"
@@ -134,8 +135,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_05 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+
+CHAPTER_MAIN(chapter_05)

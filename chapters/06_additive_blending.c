@@ -28,6 +28,7 @@
  * lines. Read docs/06_additive_blending.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "debug_views.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
@@ -137,9 +138,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                           .key = key};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_06 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+
+CHAPTER_MAIN(chapter_06)

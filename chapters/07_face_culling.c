@@ -24,6 +24,7 @@
  * (common/debug_views.c). Read docs/07_face_culling.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "debug_views.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
@@ -111,9 +112,27 @@ static bool frame(app *a)
     if (!deferred_volumes_render(&state.dv, &state.g, &a->gs, a->target.id, &f))
         return false;
     a->shaded_pixels = deferred_volumes_shaded_pixels(&state.dv);
+    a->linear = &state.dv.accum; /* the sum in linear radiance, before the present pass */
     /* the volumes view: every sphere as lines over the picture */
     return !app_view_is(a, "volumes") ||
            debug_views_draw_volumes(&state.views, &state.g, &a->gs, a->target.id, NULL);
+}
+
+/* This frame with a G-buffer of any layout and `how`'s accumulation format and view, for the
+ * benchmark's G-buffer sweep and the tests: a reversed-Z layout mirrors the volumes' depth test and
+ * projection (gbuffer_depth_test_begin), a state the chapter's own --gbuffer refuses. */
+bool chapter_07_draw_with(gbuffer *g, deferred_volumes *dv, const gpu_scene *gs, GLuint target,
+                          deferred_volumes_frame how)
+{
+    gl_pass_state pass = volume_pass;
+    gpu_scene mirrored;
+    if (!gbuffer_render(g, gs))
+        return false;
+    gbuffer_depth_test_begin(g, gs, &mirrored, &pass);
+    how.volume_state = &pass;
+    bool ok = deferred_volumes_render(dv, g, &mirrored, target, &how);
+    gbuffer_depth_test_end(g);
+    return ok;
 }
 
 static bool key(app *a, int k)
@@ -139,9 +158,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                           .key = key};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_07 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+
+CHAPTER_MAIN(chapter_07)

@@ -31,6 +31,7 @@
  * Read docs/08_stencil_volumes.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "debug_views.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
@@ -204,6 +205,7 @@ static bool draw_volumes(app *a, light_volumes_view view)
         light_draw(counted, &fullscreen_pass, lv->finite_count, gs->light_count - lv->finite_count, true);
     gl_pass_state_reset();
     a->shaded_pixels = counted ? counted_pixels() : -1;
+    a->linear = &state.dv.accum; /* the sum in linear radiance, before the present pass */
     return true;
 }
 
@@ -292,9 +294,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                           .key = key};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_08 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+
+CHAPTER_MAIN(chapter_08)

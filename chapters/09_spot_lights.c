@@ -22,6 +22,7 @@
  * (as chapter 07 draws them) and each spot's cone inside its sphere. Read docs/09_spot_lights.md.
  */
 #include "app.h"
+#include "chapters.h"
 #include "debug_views.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
@@ -221,8 +222,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_09 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+
+CHAPTER_MAIN(chapter_09)

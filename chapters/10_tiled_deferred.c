@@ -23,8 +23,10 @@
  * tile's list length. Read docs/10_tiled_deferred.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "gbuffer.h"
 #include "light_batches.h"
+#include "tile_cull.h"
 
 #include <stdlib.h>
 
@@ -67,7 +69,7 @@ static struct {
     GLuint sphere_buffer, sphere_texture; /* each light's bounding sphere, view space (RGBA32F) */
     vec4 *spheres;
     float *tile_bounds;     /* cpu: the bounds read back */
-    renderer_tile_frustum *frustums; /* cpu: per tile */
+    tile_frustum *frustums; /* cpu: per tile */
     int *ranges, *list;     /* cpu: what goes into range_buffer and list_buffer */
 } state;
 static GLuint *const buffers[] = {&state.list_buffer, &state.range_buffer, &state.sphere_buffer};
@@ -104,14 +106,14 @@ static bool size_tiles(const app *a, int lights)
 }
 
 /* Each light's bounding sphere in view space, once per frame: a point light's own; a spot's, the
- * smallest around its cone (renderer_tile_sphere, the C twin of shaders/tiled_cull.glsl). */
+ * smallest around its cone (tile_sphere, the C twin of shaders/tiled_cull.glsl). */
 static bool light_spheres(const gpu_scene *gs)
 {
     int n = gs->light_count > 0 ? gs->light_count : 1;
     if (!(state.spheres = realloc(state.spheres, (size_t)n * sizeof(vec4))))
         return false;
     for (int i = 0; i < gs->light_count; i++)
-        renderer_tile_sphere(&gs->lights[i], &gs->view, state.spheres[i]);
+        tile_sphere(&gs->lights[i], &gs->view, state.spheres[i]);
     if (state.compute) /* the compute shader reads them as a texture buffer */
         gl_texture_buffer_upload(state.sphere_buffer, state.sphere_texture, GL_RGBA32F, state.spheres,
                                  (size_t)n * sizeof(vec4));
@@ -127,7 +129,7 @@ static bool cull_compute(app *a)
     GLuint p = state.cull_program;
     glUseProgram(p);
     gbuffer_bind_textures(&state.g, &a->gs, p, SHADER_UNIT_GBUFFER);
-    renderer_tile_bind_view(p, &a->gs.view);
+    tile_bind_view(p, &a->gs.view);
     gl_texture_buffer_bind(p, "u_light_spheres", SHADER_UNIT_LIGHTS, state.sphere_texture);
     glUniform1i(glGetUniformLocation(p, "u_light_count"), a->gs.light_count);
     glUniform1i(glGetUniformLocation(p, "u_tile_capacity"), state.capacity);
@@ -148,7 +150,7 @@ static bool depth_bounds_reduce(app *a)
     gl_pass_state_apply(&shading_pass);
     glUseProgram(state.bounds_program);
     gbuffer_bind_textures(&state.g, &a->gs, state.bounds_program, SHADER_UNIT_GBUFFER);
-    renderer_tile_bind_view(state.bounds_program, &a->gs.view);
+    tile_bind_view(state.bounds_program, &a->gs.view);
     gl_draw_fullscreen();
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, state.tiles_x, state.tiles_y, GL_RGBA, GL_FLOAT, state.tile_bounds);
@@ -156,7 +158,7 @@ static bool depth_bounds_reduce(app *a)
     return gl_check("10 tile depth bounds");
 }
 
-/* 3. light culling on the CPU, with the C twin of shaders/tiled_cull.glsl (renderer_tile_*): two
+/* 3. light culling on the CPU, with the C twin of shaders/tiled_cull.glsl (tile_cull.h): two
  * sweeps over the lights, each over the tiles of its screen rectangle (light_batches_rect, chapter
  * 08): count every tile's lights; then, each tile's first entry known (w: where its next one goes),
  * write them, in light order. */
@@ -167,7 +169,7 @@ static bool cull_cpu(app *a)
     int tiles = state.tiles_x * state.tiles_y, entries = 0;
     for (int t = 0; t < tiles; t++) {
         int x = t % state.tiles_x * TILE_SIZE, y = t / state.tiles_x * TILE_SIZE;
-        renderer_tile_frustum_make(v, x, y, TILE_SIZE, &state.tile_bounds[4 * t], &state.frustums[t]);
+        tile_frustum_make(v, x, y, TILE_SIZE, &state.tile_bounds[4 * t], &state.frustums[t]);
         int *range = &state.ranges[4 * t];
         range[0] = range[1] = range[3] = 0, range[2] = (int)state.tile_bounds[4 * t + 2];
     }
@@ -180,7 +182,7 @@ static bool cull_cpu(app *a)
             for (int ty = px[1] / TILE_SIZE; ty <= px[3] / TILE_SIZE; ty++) {
                 for (int tx = px[0] / TILE_SIZE; tx <= px[2] / TILE_SIZE; tx++) {
                     int t = ty * state.tiles_x + tx, *range = &state.ranges[4 * t];
-                    if (range[2] == 0 || !renderer_tile_sphere_visible(&state.frustums[t], state.spheres[i]))
+                    if (range[2] == 0 || !tile_sphere_visible(&state.frustums[t], state.spheres[i]))
                         continue; /* background only, or out of reach */
                     if (sweep == 0)
                         range[1]++;
@@ -291,9 +293,7 @@ static void cleanup(app *a)
     free(state.spheres), free(state.tile_bounds), free(state.frustums), free(state.ranges), free(state.list);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                           .key = key};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_10 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+
+CHAPTER_MAIN(chapter_10)

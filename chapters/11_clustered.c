@@ -26,6 +26,7 @@
  * Read docs/11_clustered.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "clusters.h"
 #include "gbuffer.h"
 
@@ -63,10 +64,6 @@ static const cli_desc cli = {
 /* Clustered deferred: every pixel written once; no blending, no depth test, nothing culled. */
 static const gl_pass_state deferred_pass = {.depth_write = false};
 
-/* Forward+: chapter 00's two passes. The pre-pass writes the nearest depth (GL_LEQUAL: on a tie the
- * object drawn last wins, as in the G-buffer); then only the fragment that wrote it is shaded. */
-static const gl_pass_state prepass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
-static const gl_pass_state shade_after_prepass = {.cull = GL_BACK, .depth_func = GL_EQUAL};
 
 static struct {
     gbuffer g;
@@ -107,7 +104,8 @@ static bool resize(app *a)
 
 static clusters_view view_of(const app *a)
 {
-    return app_view_is(a, "overdraw")   ? CLUSTERS_VIEW_OVERDRAW
+    return a->linear_output             ? CLUSTERS_VIEW_LINEAR /* asked by the benchmark: float target */
+           : app_view_is(a, "overdraw") ? CLUSTERS_VIEW_OVERDRAW
            : app_view_is(a, "clusters") ? CLUSTERS_VIEW_CLUSTERS
                                         : CLUSTERS_VIEW_LIT;
 }
@@ -124,20 +122,12 @@ static bool frame_deferred(app *a)
     return ok && (!a->count_pixels || clusters_count(&state.c, &state.g, &a->gs));
 }
 
-/* Forward+: 1. depth pre-pass; 2. light assignment; 3. every object shaded once, GL_EQUAL. */
+/* Forward+: 1. depth pre-pass; 2. light assignment; 3. every object shaded once, GL_EQUAL. Written
+ * in common/clusters.c (clusters_render_forward_plus), since every chapter offers Forward+. */
 static bool frame_forward_plus(app *a)
 {
-    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
-    glViewport(0, 0, a->width, a->height);
-    gl_pass_state_apply(&prepass);
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    frame_timer_mark("depth pre-pass");
-    if (!clusters_draw_depth(&state.c, &a->gs) || !clusters_assign(&state.c, &a->gs))
-        return false;
-    bool ok = clusters_shade_forward(&state.c, &a->gs, &shade_after_prepass, view_of(a));
-    gl_pass_state_reset();
-    return ok && (!a->count_pixels || clusters_count(&state.c, NULL, &a->gs));
+    return clusters_render_forward_plus(&state.c, NULL, &a->gs, a->target.id, view_of(a)) &&
+           (!a->count_pixels || clusters_count(&state.c, NULL, &a->gs));
 }
 
 static bool frame(app *a)
@@ -145,9 +135,10 @@ static bool frame(app *a)
     if (app_renderer_is(a, "forward"))
         return app_render_forward(a);
     bool deferred = app_renderer_is(a, "deferred");
-    a->pass_state = deferred ? &deferred_pass : &shade_after_prepass;
+    a->pass_state = deferred ? &deferred_pass : &clusters_shade_after_prepass;
     if (!(deferred ? frame_deferred(a) : frame_forward_plus(a)))
         return false;
+    a->linear_written = a->linear_output;
     /* --bench and the overlay: the light-loop iterations, counted by the same shader */
     a->shaded_pixels = a->count_pixels ? state.c.evaluations : -1;
     return true;
@@ -170,9 +161,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {
-        .cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_11 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+
+CHAPTER_MAIN(chapter_11)

@@ -26,11 +26,11 @@
  * Read docs/12_transparency.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "clusters.h"
 #include "debug_views.h"
 #include "gbuffer.h"
 #include "log.h"
-#include "renderers.h"
 
 #include <string.h>
 
@@ -95,7 +95,7 @@ static bool init(app *a)
     state.query = gl_query_create();
     /* chapter 11's lists, made where it makes them by default: by compute shaders where the context
      * has them (the same lists as on the CPU, chapters.11_assign_same_*) */
-    const clusters_desc lists = {.compute = renderer_have_compute()};
+    const clusters_desc lists = {.compute = gl_have_compute()};
     return present_pass_create(&state.present) && gbuffer_create(&state.g, a->width, a->height) &&
            accum_follow_gbuffer() && clusters_create(&state.c, &lists) && debug_views_create(&state.views);
 }
@@ -184,9 +184,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                           .key = key};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_12 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+
+CHAPTER_MAIN(chapter_12)

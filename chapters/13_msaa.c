@@ -21,11 +21,11 @@
  * Read docs/13_msaa.md alongside.
  */
 #include "app.h"
+#include "chapters.h"
 #include "clusters.h"
 #include "forward.h"
 #include "gbuffer.h"
 #include "log.h"
-#include "renderers.h"
 
 #include <stdio.h>
 
@@ -136,7 +136,7 @@ static bool init(app *a)
     state.resolve_program = gl_program_load("fullscreen.vert", "msaa_resolve.frag", defines);
     state.edge_query = gl_query_create();
     a->pass_state = &pixel_pass; /* the overlay shows it */
-    const clusters_desc lists = {.compute = renderer_have_compute()}; /* chapter 11's default */
+    const clusters_desc lists = {.compute = gl_have_compute()}; /* chapter 11's default */
     return state.shade_program && (state.samples == 1 || state.edge_program) && state.resolve_program &&
            present_pass_create(&state.present) &&
            gbuffer_create_with(&state.g, a->width, a->height, &(gbuffer_desc){.samples = state.samples}) &&
@@ -279,9 +279,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-int main(int argc, char **argv)
-{
-    const app_desc desc = {.cli = cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                           .draw_forward = draw_forward};
-    return app_run(&desc, argc, argv);
-}
+/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
+const app_desc chapter_13 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .draw_forward = draw_forward};
+
+CHAPTER_MAIN(chapter_13)

@@ -23,8 +23,7 @@ bool app_renderer_is(const app *a, const char *name)
 
 bool app_renderer_is_forward(const app *a)
 {
-    int id = a->cli->renderers ? renderer_find(a->cli->renderers[a->renderer]) : RENDERER_FORWARD;
-    return id >= 0 && renderer_table[id].forward;
+    return !a->cli->renderers || app_forward_is(a->cli->renderers[a->renderer]);
 }
 
 bool app_view_is(const app *a, const char *name)
@@ -46,8 +45,8 @@ bool app_extra_number(const app *a, const char *name, double lo, double hi, doub
 bool app_extra_compute(const app *a, const char *name, bool *compute)
 {
     const char *value = app_extra(a, name);
-    *compute = value ? strcmp(value, "cpu") != 0 : renderer_have_compute();
-    if (!*compute || renderer_have_compute())
+    *compute = value ? strcmp(value, "cpu") != 0 : gl_have_compute();
+    if (!*compute || gl_have_compute())
         return true;
     log_error("--%s %s needs compute shaders (OpenGL 4.3), which this context %s: use --%s cpu", name, value,
               GLAD_GL_VERSION_4_3 ? "has, hidden by COURSE_NO_COMPUTE" : "does not have", name);
@@ -56,7 +55,7 @@ bool app_extra_compute(const app *a, const char *name, bool *compute)
 
 void app_toggle_compute(bool *compute, const char *what)
 {
-    if (!*compute && !renderer_have_compute()) {
+    if (!*compute && !gl_have_compute()) {
         log_info("%s: still the CPU, this context has no compute shaders (OpenGL 4.3)", what);
         return;
     }
@@ -66,17 +65,18 @@ void app_toggle_compute(bool *compute, const char *what)
 
 bool app_render_forward(app *a)
 {
-    int id = renderer_find(a->cli->renderers ? a->cli->renderers[a->renderer] : NULL);
-    if (id < 0 || !renderer_table[id].forward)
-        id = RENDERER_FORWARD;
-    const renderer_draw_options o = {.count_pixels = a->options->bench};
-    renderer_result res;
-    bool ok = renderers_draw(&a->renderers, (renderer_id)id, &a->gs, a->target.id, o, &res);
-    a->shaded_pixels = res.shaded;
+    /* counted for --bench only: the overlay shows the chapter's own count, not forward's */
+    const app_forward_options o = {.count_pixels = a->options->bench, .linear_output = a->linear_output};
+    app_forward_work work;
+    bool ok = app_forward_draw(&a->forward, a->cli->renderers ? a->cli->renderers[a->renderer] : NULL, &a->gs,
+                               a->target.id, o, &work);
+    a->shaded_pixels = work.shaded;
+    a->lights_per_pixel = work.lights_per_pixel;
+    a->linear_written = a->linear_output;
     return ok;
 }
 
-static bool make_target(app *a)
+bool app_target_make(app *a)
 {
     fbo_destroy(&a->target);
     const fbo_desc desc = {
@@ -175,7 +175,7 @@ static bool follow_size(app *a, loop *l)
         return true;
     a->width = w, a->height = h;
     log_debug("resize to %dx%d", w, h);
-    return app_check_size_limits(w, h) && make_target(a) && (!l->desc->resize || l->desc->resize(a)) &&
+    return app_check_size_limits(w, h) && app_target_make(a) && (!l->desc->resize || l->desc->resize(a)) &&
            app_window_resize(&l->window, a);
 }
 
@@ -227,6 +227,7 @@ static bool draw_frame(app *a, loop *l, int *rc)
     frame_timer_mark("scene update");
     a->count_pixels = l->opt->bench || l->window.overlay_on;
     a->shaded_pixels = -1;
+    a->lights_per_pixel = 1.0;
     bool ok = gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) && l->desc->frame(a) &&
               app_window_compare(&l->window, a, l->desc->draw_forward);
     frame_timer_end(&a->timer);
@@ -314,7 +315,7 @@ static int app_open(app *a, const app_desc *desc, const cli_options *opt)
     }
     log_debug("data folder %s (from %s)", data_dir(), data_dir_origin());
     const platform_desc pd = {
-        .backend = opt->backend, .width = opt->width, .height = opt->height, .title = desc->cli.program,
+        .backend = opt->backend, .width = opt->width, .height = opt->height, .title = desc->cli->program,
         .gl_debug = opt->gl_debug};
     int rc = platform_create(&pd);
     if (rc != EXIT_CODE_OK)
@@ -331,7 +332,6 @@ static int app_setup(app *a, const app_desc *desc)
         return EXIT_CODE_USAGE;
     if (!gpu_scene_create(&a->scene, &a->gs))
         return EXIT_CODE_USAGE; /* a model file that cannot be loaded is an input error */
-    renderers_create(&a->renderers);
     a->query = gl_query_create();
     if (!frame_timer_create(&a->timer))
         return EXIT_CODE_RUNTIME;
@@ -340,7 +340,7 @@ static int app_setup(app *a, const app_desc *desc)
     const gbuffer_layout *layout = a->options->gbuffer ? gbuffer_layout_find(a->options->gbuffer) : NULL;
     if (layout && !gbuffer_set_default_layout(layout))
         return EXIT_CODE_USAGE;
-    if (!make_target(a) || (desc->init && !desc->init(a)))
+    if (!app_target_make(a) || (desc->init && !desc->init(a)))
         return EXIT_CODE_RUNTIME;
     return !layout || gbuffer_layout_fits_pass(layout, a->pass_state) ? EXIT_CODE_OK : EXIT_CODE_USAGE;
 }
@@ -352,7 +352,7 @@ static void app_close(app *a, const app_desc *desc)
     fbo_destroy(&a->target);
     gl_query_destroy(&a->query);
     frame_timer_destroy(&a->timer);
-    renderers_destroy(&a->renderers);
+    app_forward_destroy(&a->forward);
     gpu_scene_destroy(&a->gs);
     gl_util_shutdown();
     if (gl_live_objects() != 0)
@@ -379,7 +379,7 @@ static int app_finish(app *a, loop *l, int rc)
     return rc;
 }
 
-static void app_init(app *a, const cli_desc *cli, const cli_options *opt)
+void app_init(app *a, const cli_desc *cli, const cli_options *opt)
 {
     memset(a, 0, sizeof *a);
     a->options = opt;
@@ -393,12 +393,18 @@ static void app_init(app *a, const cli_desc *cli, const cli_options *opt)
     a->shaded_pixels = -1;
 }
 
+cli_desc app_cli_of(const app_desc *desc, const char **renderers_plus)
+{
+    cli_desc cli = *desc->cli;
+    cli.default_cutoff = LIGHT_DEFAULT_CUTOFF;
+    cli.renderers = app_with_forward_plus(cli.renderers, renderers_plus, APP_RENDERERS_MAX);
+    return cli;
+}
+
 int app_run(const app_desc *desc, int argc, char **argv)
 {
-    cli_desc cli = desc->cli;
-    cli.default_cutoff = LIGHT_DEFAULT_CUTOFF;
-    static const char *renderers_plus[32];
-    cli.renderers = app_with_forward_plus(cli.renderers, renderers_plus, 32);
+    static const char *renderers_plus[APP_RENDERERS_MAX];
+    cli_desc cli = app_cli_of(desc, renderers_plus);
     cli_options opt;
     int rc = cli_parse(argc, argv, &cli, &opt);
     if (rc != EXIT_CODE_OK)
@@ -407,7 +413,7 @@ int app_run(const app_desc *desc, int argc, char **argv)
     log_set_quiet(opt.bench);
     if (opt.screenshot && image_format_of(opt.screenshot) == IMAGE_UNKNOWN) {
         log_error("%s: --screenshot '%s': unknown image format (end the name in .png, .bmp, .tga or .jpg)",
-                  desc->cli.program, opt.screenshot);
+                  desc->cli->program, opt.screenshot);
         return EXIT_CODE_USAGE;
     }
     data_dir_set(opt.data_dir);
@@ -418,7 +424,7 @@ int app_run(const app_desc *desc, int argc, char **argv)
                              ? a.default_scene
                              : CLI_DEFAULT_SCENE;
     if (opt.gl_info)
-        return app_print_gl_info(&opt, desc->cli.program);
+        return app_print_gl_info(&opt, desc->cli->program);
     if ((rc = app_open(&a, desc, &opt)) != EXIT_CODE_OK)
         return rc;
 

@@ -4,9 +4,9 @@
  *                               loop frames (window or headless), time them (--bench), write the
  *                               screenshot; returns the process exit code
  *   app_render_forward(a)       the forward renderer selected by --renderer or R (one of
- *                               renderer_table's forward names; "forward" otherwise) into a->target
+ *                               app_forward.h's; "forward" otherwise) into a->target
  *   app_renderer_is(a, name)    the renderer currently selected (--renderer, or the R key)
- *   app_renderer_is_forward(a)  whether it is one of renderer_table's forward renderers; every
+ *   app_renderer_is_forward(a)  whether it is one of app_forward.h's forward renderers; every
  *                               chapter that offers `forward` offers chapter 11's `forward-plus` too
  *                               (the runner adds it to the chapter's list)
  *   app_view_is(a, name)        the view currently selected (--view, or the V key)
@@ -17,28 +17,35 @@
  *                               a chapter's choice between compute shaders and its GL 3.3 path
  *                               (--NAME compute|cpu; chapter 10's --path, chapter 11's --assign):
  *                               any value but "cpu" asks for compute; no value: compute where the
- *                               context has it (renderer_have_compute). Asked for where it has not:
+ *                               context has it (gl_have_compute). Asked for where it has not:
  *                               false, and one line saying what is missing and what to use instead
  *   app_toggle_compute(&compute, what)
  *                               the same choice switched by a key: to the other path and one log
  *                               line naming it; to compute where the context has none, one line
  *                               saying so, and `compute` stays false
  *
- * A chapter fills an app_desc: its command-line description and five callbacks. Its frame
- * callback draws the final, display-encoded picture into a->target (RGBA8 colour + 32-bit float
- * depth), which the runner shows in the window or saves with --screenshot. When a->count_pixels
- * (--bench, or the overlay is on) it counts its lighting pass's fragments with a->query
- * (gl_samples_begin/end) into a->shaded_pixels; a->pass_state, when it sets it, is shown too.
+ * A chapter exports an app_desc (its command-line description and six callbacks) named after it,
+ * `chapter_NN`, and ends with CHAPTER_MAIN(chapter_NN): its main() when built as its own program,
+ * nothing when the build compiles it again (CHAPTER_NO_MAIN) for the benchmark and the tests, which
+ * drive it in-process (app_embed.h). Its frame callback draws the final, display-encoded picture
+ * into a->target (RGBA8 colour + 32-bit float depth), which the runner shows in the window or saves
+ * with --screenshot. When a->count_pixels (--bench, or the overlay is on) it counts its lighting
+ * pass's fragments with a->query (gl_samples_begin/end) into a->shaded_pixels, and when each of them
+ * loops over several lights sets a->lights_per_pixel (their product is the frame's light
+ * evaluations); a->pass_state, when it sets it, is shown too. Two requests only an embedding caller
+ * makes: a->linear_output asks for linear radiance into a float a->target (a chapter that can sets
+ * a->linear_written), and a chapter whose frame sums linear radiance before its present pass points
+ * a->linear at that buffer.
  */
 #ifndef COMMON_APP_H
 #define COMMON_APP_H
 
+#include "app_forward.h"
 #include "cli.h"
 #include "fbo.h"
 #include "frame_timer.h"
 #include "gpu_scene.h"
 #include "keys.h"
-#include "renderers.h"
 #include "scene.h"
 
 typedef struct app {
@@ -46,7 +53,7 @@ typedef struct app {
     const cli_desc *cli;
     scene scene;
     gpu_scene gs;
-    renderer_set renderers; /* the forward renderers every chapter can switch to */
+    app_forward forward; /* the forward renderers every chapter can switch to */
     fbo target;
     int width, height;
     int renderer; /* index into cli.renderers */
@@ -58,12 +65,16 @@ typedef struct app {
     frame_timer timer;  /* the frame and its passes, on an honest clock (frame_timer.h) */
     long shaded_pixels; /* what the chapter counted with it in the last frame; -1 if not */
     bool count_pixels;  /* whether to count (--bench, or the overlay is on) */
+    double lights_per_pixel; /* lights each counted fragment loops over; 1 unless the chapter says */
+    bool linear_output;  /* asked by an embedding caller: linear radiance into a float a->target */
+    bool linear_written; /* the chapter did so this frame */
+    const fbo *linear;   /* the chapter's linear sum of this frame (before present), or NULL */
     const gl_pass_state *pass_state; /* the chapter's lighting pass state, shown by the overlay */
     char default_scene[4200]; /* the data folder's default scene, when no --scene was given */
 } app;
 
 typedef struct app_desc {
-    cli_desc cli;
+    const cli_desc *cli;            /* its command line (--help prints it) */
     bool (*init)(app *a);           /* GL resources; target exists */
     bool (*resize)(app *a);         /* after the target was recreated at a->width x a->height */
     bool (*frame)(app *a);          /* draw into a->target */
@@ -73,6 +84,14 @@ typedef struct app_desc {
      * table's forward (chapter 13: forward MSAA at its own sample count) */
     bool (*draw_forward)(app *a, GLuint target);
 } app_desc;
+
+/* The last line of a chapter: its main() (nothing when compiled for the embedding library). */
+#ifdef CHAPTER_NO_MAIN
+#define CHAPTER_MAIN(desc)
+#else
+#define CHAPTER_MAIN(desc)                                                                                    \
+    int main(int argc, char **argv) { return app_run(&(desc), argc, argv); }
+#endif
 
 int app_run(const app_desc *desc, int argc, char **argv);
 bool app_render_forward(app *a);

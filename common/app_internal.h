@@ -35,6 +35,17 @@ void app_hooks_after_frame(app_hooks *h, bool minimised);
 int app_hooks_check(const app_hooks *h, const app *a, const cli_options *opt);
 void app_bench_print(const app *a, double *ms, double *pass_ms, int n);
 
+/* What app_run and app_embed share (app.c):
+ *   app_cli_of(desc, renderers_plus)    the chapter's command line as the runner offers it: the
+ *                                       default cut-off, Forward+ beside forward (its list in
+ *                                       renderers_plus, APP_RENDERERS_MAX entries, kept by the caller)
+ *   app_init(a, cli, opt)               a zeroed app for those options
+ *   app_target_make(a)                  a->target at a->width x a->height (RGBA8 + 32-bit float depth) */
+#define APP_RENDERERS_MAX 32
+cli_desc app_cli_of(const app_desc *desc, const char **renderers_plus);
+void app_init(app *a, const cli_desc *cli, const cli_options *opt);
+bool app_target_make(app *a);
+
 /* The command line's other consequences (app_options.c):
  *   app_print_gl_info(opt, program)     --gl-info: key=value lines about the context; an exit code
  *   app_check_size_limits(w, h)         false (logged) when the context cannot make a w x h target

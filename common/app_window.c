@@ -169,9 +169,9 @@ bool app_window_compare(app_window *w, app *a, bool (*draw_forward)(app *a, GLui
     if (!w->have_cmp && !(w->have_cmp = compare_create(&w->cmp, a->width, a->height)))
         return false;
     frame_timer_mark(APP_COMPARE_PASS);
-    const renderer_draw_options o = {0};
+    const app_forward_options o = {0};
     bool drawn = draw_forward ? draw_forward(a, w->cmp.forward.id)
-                              : renderers_draw(&a->renderers, RENDERER_FORWARD, &a->gs, w->cmp.forward.id, o, NULL);
+                              : app_forward_draw(&a->forward, "forward", &a->gs, w->cmp.forward.id, o, NULL);
     if (!drawn ||
         !compare_compose(&w->cmp, &a->target, w->compare, divider_pixel(w, a)))
         return false;
@@ -209,7 +209,7 @@ static void count_ideal(app_window *w, app *a)
     float *depth = malloc(n * sizeof *depth);
     double *positions = malloc(4 * n * sizeof *positions);
     if (depth && positions && (w->ideal_target.id || fbo_create(&w->ideal_target, &d, a->width, a->height)) &&
-        renderers_draw(&a->renderers, RENDERER_FORWARD, &a->gs, w->ideal_target.id, (renderer_draw_options){0}, NULL)) {
+        app_forward_draw(&a->forward, "forward", &a->gs, w->ideal_target.id, (app_forward_options){0}, NULL)) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, w->ideal_target.id);
         glReadPixels(0, 0, a->width, a->height, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -304,9 +304,7 @@ int app_window_overlay_text(const app_window *w, const app *a, bool paused, char
     else if (a->shaded_pixels >= 0)
         put(out, size, &used, "lighting fragments %ld = %.2f per pixel (Space: pause to count the ideal)\n",
             a->shaded_pixels, (double)a->shaded_pixels / ((double)a->width * a->height));
-    const char *name = a->cli->renderers ? a->cli->renderers[a->renderer] : "forward";
-    int id = renderer_find(name);
-    if (a->pass_state && (id < 0 || !renderer_table[id].forward)) { /* the chapter's own renderer */
+    if (a->pass_state && !app_renderer_is_forward(a)) { /* the chapter's own renderer */
         char pass[160];
         describe_pass(a->pass_state, pass, sizeof pass);
         put(out, size, &used, "lighting pass: %s\n", pass);

@@ -28,8 +28,7 @@ static void print_choices(FILE *stream, const char *const *choices)
         fprintf(stream, "%s%s", i ? "|" : "", choices[i]);
 }
 
-const char *const cli_gbuffer_layouts[CLI_GBUFFER_LAYOUT_COUNT + 1] = {
-    "reference", "compact", "compact-d24s8", "reversed-z", "linear-albedo", "oct8", "oct16", NULL};
+const char *const cli_gbuffer_layouts[GBUFFER_LAYOUT_COUNT + 1] = GBUFFER_LAYOUT_NAMES;
 
 /* Words of `text`, from `column` of a line that holds the option's name (padded: at_start, no space
  * before the first word), wrapped before HELP_WIDTH onto lines that start at HELP_COLUMN. */

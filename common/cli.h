@@ -14,6 +14,7 @@
 #define COMMON_CLI_H
 
 #include "exit_code.h"
+#include "gbuffer_layout_names.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -74,10 +75,9 @@ typedef struct cli_options {
     const char *extra_values[CLI_MAX_EXTRAS];
 } cli_options;
 
-/* --gbuffer's choices, NULL-terminated, in the order of common/gbuffer.h's gbuffer_layouts[] (the
- * GL-free command line names them; gbuffer.c checks the count). */
-#define CLI_GBUFFER_LAYOUT_COUNT 7
-extern const char *const cli_gbuffer_layouts[CLI_GBUFFER_LAYOUT_COUNT + 1];
+/* --gbuffer's choices, NULL-terminated: gbuffer_layout_names.h's list (GL-free), in the order of
+ * common/gbuffer.h's gbuffer_layouts[]. */
+extern const char *const cli_gbuffer_layouts[GBUFFER_LAYOUT_COUNT + 1];
 
 int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out);
 void cli_print_help(const cli_desc *desc, FILE *stream);

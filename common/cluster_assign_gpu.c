@@ -1,6 +1,7 @@
 /* cluster_assign_gpu.c - see cluster_assign_gpu.h. */
 #include "cluster_assign_gpu.h"
 
+#include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
 

@@ -1,5 +1,5 @@
 /* cluster_assign_gpu.h - chapter 11's light assignment by compute shaders (GL 4.3): the same lists
- * as cluster_lists_assign (cluster_grid.h), written straight into the two buffers the shading
+ * as cluster_lists_assign (cluster_lists.h), written straight into the two buffers the shading
  * passes read, so that the shaders that read them do not change.
  *
  *   cluster_assign_gpu_create(a)      its buffers; the programs are made on first use
@@ -21,7 +21,7 @@
 #ifndef COMMON_CLUSTER_ASSIGN_GPU_H
 #define COMMON_CLUSTER_ASSIGN_GPU_H
 
-#include "cluster_grid.h"
+#include "cluster_lists.h"
 
 #include <glad/gl.h>
 

@@ -1,5 +1,5 @@
 /* cluster_grid.h - chapter 11's clusters without GL: the grid, the slice of a depth, the conservative
- * sphere test and the per-cluster light lists, on the CPU (common/clusters.c uploads them).
+ * sphere test and the clusters a sphere may reach (the lists made from them: cluster_lists.h).
  *
  *   cluster_grid_init(g, width, height, tile_size, slices, proj, near, far)
  *        the grid of a view: tiles of tile_size x tile_size pixels (the last row and column may be
@@ -40,18 +40,6 @@
  *                                         a light's bounding sphere (xyz centre, w radius): a point
  *                                         light's own; a spot's, the smallest around its cone cut by
  *                                         its sphere (as chapter 10's light_bounds)
- *   cluster_lists_assign(lists, g, spheres, count, cluster_limit)
- *                                         for every view-space sphere (xyz centre, w radius; w >= 1e30:
- *                                         infinite, in every cluster), in order, the clusters it can
- *                                         reach; then per cluster (first, count) in lists->ranges and
- *                                         the sphere indices in lists->indices, each list in sphere
- *                                         order. A cluster reached by more than cluster_limit spheres
- *                                         (> 0; the list overflows) gets count -1 and no entries: its
- *                                         pixels loop over every light. false when out of memory
- *   cluster_lists_first_difference(a, b)  the first cluster whose (first, count) or entries differ
- *                                         between two sets of lists (or whose cluster counts do); -1
- *                                         when they are the same
- *   cluster_lists_destroy(lists)
  */
 #ifndef COMMON_CLUSTER_GRID_H
 #define COMMON_CLUSTER_GRID_H
@@ -70,17 +58,6 @@ typedef struct cluster_grid {
     float p20, p21;  /* and its off-centre terms (0 for a symmetric frustum) */
 } cluster_grid;
 
-typedef struct cluster_lists {
-    int *ranges;      /* per cluster: first entry, count (-1: every light) */
-    int *indices;     /* the entries */
-    int entries;      /* used in indices */
-    int clusters;     /* ranges holds 2 * clusters ints */
-    long pairs_total; /* (cluster, light) hits before any cluster fell back to every light */
-    int overflowed;   /* clusters whose count is -1 */
-    /* work space */
-    int *pairs, pair_cap, range_cap, index_cap;
-} cluster_lists;
-
 void cluster_grid_init(cluster_grid *g, int width, int height, int tile_size, int slices,
                        const float proj[16], float near_plane, float far_plane);
 int cluster_grid_cubic_slices(const float proj[16], int tiles_y, float near_plane, float far_plane);
@@ -96,9 +73,5 @@ void cluster_grid_sphere_tiles(const cluster_grid *g, const float sphere[4], flo
                                int ty[2]);
 void cluster_light_bounds(const float position[3], const float direction[3], float radius, float cos_outer,
                           float out[4]);
-bool cluster_lists_assign(cluster_lists *lists, const cluster_grid *g, const float (*spheres)[4], int count,
-                          int cluster_limit);
-int cluster_lists_first_difference(const cluster_lists *a, const cluster_lists *b);
-void cluster_lists_destroy(cluster_lists *lists);
 
 #endif

@@ -2,6 +2,7 @@
 #include "clusters.h"
 
 #include "frame_timer.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
 
@@ -257,10 +258,9 @@ bool clusters_count(clusters *c, const gbuffer *g, const gpu_scene *gs)
     gl_pass_state_reset();
     if (!ok)
         return false;
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, c->count_pixels);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!fbo_read_float(&c->count_target, 0, c->count_pixels))
+        return false;
     long covered = 0, evaluations = 0;
     for (long i = 0; i < (long)w * h; i++) {
         covered += (long)c->count_pixels[4 * i];
@@ -268,4 +268,38 @@ bool clusters_count(clusters *c, const gbuffer *g, const gpu_scene *gs)
     }
     c->covered = covered, c->evaluations = evaluations;
     return gl_check("clusters_count");
+}
+
+const gl_pass_state clusters_prepass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
+const gl_pass_state clusters_shade_after_prepass = {.cull = GL_BACK, .depth_func = GL_EQUAL};
+
+/* The opaque frame in linear radiance, then the glass over it with the same lists (chapter 12). */
+static bool shade_forward_plus_linear(void *user, const gpu_scene *gs)
+{
+    clusters *c = user;
+    return clusters_shade_forward(c, gs, &clusters_shade_after_prepass, CLUSTERS_VIEW_LINEAR) &&
+           clusters_shade_glass(c, gs, forward_glass_passes, 2, GPU_SCENE_BACK_TO_FRONT, CLUSTERS_VIEW_LINEAR);
+}
+
+/* The shading after the pre-pass; glass is blended in linear radiance, as forward does. */
+static bool shade_forward_plus(clusters *c, forward *fwd, const gpu_scene *gs, clusters_view view)
+{
+    if (!fwd || gs->transparent_count == 0)
+        return clusters_shade_forward(c, gs, &clusters_shade_after_prepass, view);
+    if (view == CLUSTERS_VIEW_LINEAR)
+        return shade_forward_plus_linear(c, gs);
+    return forward_draw_linear(fwd, gs, shade_forward_plus_linear, c);
+}
+
+bool clusters_render_forward_plus(clusters *c, forward *fwd, const gpu_scene *gs, GLuint target, clusters_view view)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, gs->view.width, gs->view.height);
+    gl_pass_state_apply(&clusters_prepass);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    frame_timer_mark("depth pre-pass");
+    bool ok = clusters_draw_depth(c, gs) && clusters_assign(c, gs) && shade_forward_plus(c, fwd, gs, view);
+    gl_pass_state_reset();
+    return ok;
 }

@@ -33,6 +33,14 @@
  *                                     list of the cluster each fragment falls in, into the (float)
  *                                     framebuffer bound; view CLUSTERS_VIEW_OVERDRAW: one count per
  *                                     fragment (1 / SHADER_OVERDRAW_SCALE) instead
+ *   clusters_render_forward_plus(c, fwd, gs, target, view)
+ *                                     Forward+'s whole frame into the framebuffer `target` (cleared
+ *                                     here): depth pre-pass (clusters_prepass), light assignment,
+ *                                     shading (clusters_shade_after_prepass); with fwd, a scene's glass
+ *                                     over it with the same lists, in linear radiance: straight into
+ *                                     a float target (view CLUSTERS_VIEW_LINEAR), else through
+ *                                     forward's linear frame (forward_draw_linear). Written once here
+ *                                     because every chapter offers Forward+ (the runner's R key)
  *   clusters_count(c, g, gs)          the light-loop iterations of the last frame, exactly as the
  *                                     shading pass ran them: the same shader in its count view into
  *                                     a float target, read back and added up (g NULL: Forward+, which
@@ -53,7 +61,9 @@
 
 #include "cluster_assign_gpu.h"
 #include "cluster_grid.h"
+#include "cluster_lists.h"
 #include "fbo.h"
+#include "forward.h"
 #include "gbuffer.h"
 #include "gpu_scene.h"
 
@@ -100,6 +110,11 @@ bool clusters_shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *gs,
                              clusters_view view);
 bool clusters_shade_glass(clusters *c, const gpu_scene *gs, const gl_pass_state *const passes[], int pass_count,
                           gpu_scene_order order, clusters_view view);
+/* Forward+'s two passes, chapter 00's: the pre-pass writes the nearest depth (GL_LEQUAL: on a tie the
+ * object drawn last wins, as in the G-buffer); then only the fragment that wrote it is shaded. */
+extern const gl_pass_state clusters_prepass, clusters_shade_after_prepass;
+
+bool clusters_render_forward_plus(clusters *c, forward *fwd, const gpu_scene *gs, GLuint target, clusters_view view);
 bool clusters_count(clusters *c, const gbuffer *g, const gpu_scene *gs);
 
 #endif

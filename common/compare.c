@@ -1,6 +1,7 @@
 /* compare.c - see compare.h. */
 #include "compare.h"
 
+#include "gl_program.h"
 #include "gl_util.h"
 
 #include <string.h>

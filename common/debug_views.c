@@ -2,6 +2,7 @@
 #include "debug_views.h"
 
 #include "frame_timer.h"
+#include "gl_program.h"
 #include "light_volumes.h"
 
 #include <string.h>

@@ -1,4 +1,4 @@
-/* debug_views.h - the two debug views every chapter that lights the G-buffer (03-08) shows on V:
+/* debug_views.h - the two debug views that chapters 03-09 show on V (chapter 12 the first of them):
  * `overdraw`, how many lighting fragments ran at each pixel as a heat map, and `volumes`, every
  * light's volume as lines over the lit picture. Read docs/07_face_culling.md, "Debug views".
  *

@@ -112,12 +112,20 @@ void fbo_destroy(fbo *f)
 
 bool fbo_read_rgba8(const fbo *f, int attachment, unsigned char *rgba)
 {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, f->id);
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)attachment);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, f->width, f->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    gl_read_rgba8(f->id, attachment, f->width, f->height, rgba);
     return gl_check("fbo_read_rgba8");
+}
+
+bool fbo_read_float(const fbo *f, int attachment, float *rgba)
+{
+    gl_read_rgba_float(f->id, attachment, f->width, f->height, rgba);
+    return gl_check("fbo_read_float");
+}
+
+bool fbo_read_depth(const fbo *f, float *depth)
+{
+    gl_read_depth(f->id, f->width, f->height, depth);
+    return gl_check("fbo_read_depth");
 }
 
 bool fbo_samples_supported(int n, int cap, const char *what)

@@ -5,6 +5,10 @@
  *   fbo_status_name(status)               "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT", ...
  *   fbo_read_rgba8(fbo, attachment, rgba) read a colour attachment as width x height RGBA bytes,
  *                                         in GL's row order (bottom row first)
+ *   fbo_read_float(fbo, attachment, rgba) the same as width x height RGBA floats
+ *   fbo_read_depth(fbo, depth)            the depth attachment as width x height floats in [0, 1]
+ *                                         (all three through gl_util.h's gl_read_*, which read any
+ *                                         framebuffer object by name)
  *   fbo_samples_supported(n, cap, what)   whether colour and depth textures of n samples can be made
  *                                         (GL_MAX_SAMPLES, GL_MAX_COLOR_TEXTURE_SAMPLES and
  *                                         GL_MAX_DEPTH_TEXTURE_SAMPLES, and the caller's cap); if not,
@@ -47,6 +51,8 @@ bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height);
 void fbo_destroy(fbo *f);
 const char *fbo_status_name(GLenum status);
 bool fbo_read_rgba8(const fbo *f, int attachment, unsigned char *rgba);
+bool fbo_read_float(const fbo *f, int attachment, float *rgba);
+bool fbo_read_depth(const fbo *f, float *depth);
 bool fbo_samples_supported(int n, int cap, const char *what);
 
 #endif

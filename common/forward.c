@@ -17,6 +17,21 @@ const gl_pass_state forward_glass_front_pass = {
     .blend = {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}, .cull = GL_BACK, .depth_func = GL_LEQUAL};
 const gl_pass_state *const forward_glass_passes[2] = {&forward_glass_back_pass, &forward_glass_front_pass};
 
+const forward_variant forward_variants[FORWARD_VARIANT_COUNT] = {
+    {"forward", {.prepass = true, .light_lists = true}}, /* chapter 00's default */
+    {"forward-naive", {0}},                            /* every object with every light, one pass */
+    {"forward-prepass", {.prepass = true}},
+    {"forward-lists", {.light_lists = true}},
+};
+
+const forward_options *forward_variant_find(const char *name)
+{
+    for (int i = 0; name && i < FORWARD_VARIANT_COUNT; i++)
+        if (strcmp(forward_variants[i].name, name) == 0)
+            return &forward_variants[i].options;
+    return NULL;
+}
+
 bool forward_create(forward *f)
 {
     memset(f, 0, sizeof *f);

@@ -20,6 +20,9 @@
  *                                           f->hdr, which holds the bound framebuffer's depth; then
  *                                           the present pass encodes it into the bound framebuffer,
  *                                           whose depth gets f->hdr's back (below; Forward+ too)
+ *   forward_variant_find(name)              chapter 00's forward renderer called name ("forward",
+ *                                           "forward-naive", "forward-prepass", "forward-lists"):
+ *                                           its optimisations; NULL when name is none of them
  *   forward_shaded_pixels(f)                fragments that passed the depth test in the last
  *                                           shading pass (GL_SAMPLES_PASSED), when counting is on:
  *                                           the opaque objects' plus the transparent ones'
@@ -62,6 +65,15 @@ typedef struct forward_options {
     bool linear_output;
 } forward_options;
 
+/* Chapter 00's four forward renderers, by the optimisations each turns on (forward_variant_find). */
+typedef struct forward_variant {
+    const char *name;
+    forward_options options;
+} forward_variant;
+
+#define FORWARD_VARIANT_COUNT 4
+extern const forward_variant forward_variants[FORWARD_VARIANT_COUNT];
+
 /* How forward_draw_transparent draws the glass; zero is what forward_draw_shaded draws. */
 typedef struct forward_glass {
     const gl_pass_state *const *passes; /* per object, in turn; NULL: forward_glass_passes */
@@ -98,6 +110,7 @@ void forward_draw_depth(const forward *f, const gpu_scene *gs);
 bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options options);
 bool forward_draw_transparent(forward *f, const gpu_scene *gs, const forward_glass *glass);
 bool forward_draw_linear(forward *f, const gpu_scene *gs, bool (*draw)(void *user, const gpu_scene *gs), void *user);
+const forward_options *forward_variant_find(const char *name);
 long forward_shaded_pixels(const forward *f);
 
 #endif

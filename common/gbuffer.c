@@ -1,36 +1,41 @@
 /* gbuffer.c - see gbuffer.h. */
 #include "gbuffer.h"
 
-#include "cli.h"
 #include "frame_timer.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
+#include "mat4d.h"
 
 #include <string.h>
 
-_Static_assert(GBUFFER_LAYOUT_COUNT == CLI_GBUFFER_LAYOUT_COUNT, "cli_gbuffer_layouts[] names each layout");
-
-/* What each loses is measured by tests/unit/test_octahedral.c (normals) and the benchmark's
- * G-buffer sweep (positions, pictures); docs/02_mrt_gbuffer.md has the numbers. */
-const gbuffer_layout gbuffer_layouts[GBUFFER_LAYOUT_COUNT] = {
-    [GBUFFER_LAYOUT_REFERENCE] = {"reference", GL_SRGB8_ALPHA8, GL_RGBA16F, SHADER_GBUFFER_NORMAL_HALF,
-                                  GBUFFER_DEPTH_D32F, "normal <= 0.040 deg (half floats); S, P half floats"},
-    [GBUFFER_LAYOUT_COMPACT] = {"compact", GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED,
-                                GBUFFER_DEPTH_D32F, "normal <= 0.040 deg (2x12 bits); S to 1/255; P integer"},
-    [GBUFFER_LAYOUT_COMPACT_D24S8] = {"compact-d24s8", GL_SRGB8_ALPHA8, GL_RGBA8,
-                                      SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D24S8,
-                                      "as compact, depth in 24-bit fixed point"},
-    [GBUFFER_LAYOUT_REVERSED_Z] = {"reversed-z", GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED,
-                                   GBUFFER_DEPTH_D32F_REVERSED,
-                                   "as compact; relative depth error even over distance"},
-    [GBUFFER_LAYOUT_LINEAR_ALBEDO] = {"linear-albedo", GL_RGBA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED,
-                                      GBUFFER_DEPTH_D32F,
-                                      "as compact, albedo in linear 1/255 steps (coarse in the dark)"},
-    [GBUFFER_LAYOUT_OCT8] = {"oct8", GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_BYTES,
-                             GBUFFER_DEPTH_D32F, "as compact, normal <= 0.64 deg (2x8 bits)"},
-    [GBUFFER_LAYOUT_OCT16] = {"oct16", GL_SRGB8_ALPHA8, GL_RGBA16, SHADER_GBUFFER_NORMAL_SHORTS,
-                              GBUFFER_DEPTH_D32F, "as compact, normal <= 0.0025 deg (2x16 bits)"},
-};
+/* Each layout's formats and what it loses, by id; GBUFFER_LAYOUT_LIST (gbuffer_layout_names.h) pairs
+ * them with the names. What each loses is measured by tests/unit/test_octahedral.c (normals) and the
+ * benchmark's G-buffer sweep (positions, pictures); docs/02_mrt_gbuffer.md has the numbers. */
+#define FORMATS_REFERENCE                                                                                    \
+    GL_SRGB8_ALPHA8, GL_RGBA16F, SHADER_GBUFFER_NORMAL_HALF, GBUFFER_DEPTH_D32F,                             \
+        "normal <= 0.040 deg (half floats); S, P half floats"
+#define FORMATS_COMPACT                                                                                      \
+    GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D32F,                             \
+        "normal <= 0.040 deg (2x12 bits); S to 1/255; P integer"
+#define FORMATS_COMPACT_D24S8                                                                                \
+    GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D24S8,                            \
+        "as compact, depth in 24-bit fixed point"
+#define FORMATS_REVERSED_Z                                                                                   \
+    GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D32F_REVERSED,                    \
+        "as compact; relative depth error even over distance"
+#define FORMATS_LINEAR_ALBEDO                                                                                \
+    GL_RGBA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D32F,                                    \
+        "as compact, albedo in linear 1/255 steps (coarse in the dark)"
+#define FORMATS_OCT8                                                                                         \
+    GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_BYTES, GBUFFER_DEPTH_D32F,                              \
+        "as compact, normal <= 0.64 deg (2x8 bits)"
+#define FORMATS_OCT16                                                                                        \
+    GL_SRGB8_ALPHA8, GL_RGBA16, SHADER_GBUFFER_NORMAL_SHORTS, GBUFFER_DEPTH_D32F,                            \
+        "as compact, normal <= 0.0025 deg (2x16 bits)"
+#define LAYOUT(id, name) [GBUFFER_LAYOUT_##id] = {name, FORMATS_##id},
+const gbuffer_layout gbuffer_layouts[GBUFFER_LAYOUT_COUNT] = {GBUFFER_LAYOUT_LIST(LAYOUT)};
+#undef LAYOUT
 
 static const gbuffer_layout *default_layout = &gbuffer_layouts[GBUFFER_LAYOUT_DEFAULT];
 
@@ -141,48 +146,15 @@ static void reversed_view_proj(const frame_view *v, mat4 out)
     }
 }
 
-/* Inverse of a column-major 4x4 in double (cofactors), rounded to float once at the end: the
- * reconstruction matrix of reversed-Z should not throw away the precision its depth keeps. */
+/* Inverse in double (common/mat4d.h), rounded to float once at the end: the reconstruction matrix
+ * of reversed-Z should not throw away the precision its depth keeps. */
 static void invert_to_float(const float *m, mat4 out)
 {
     double a[16], inv[16];
+    mat4d_from_float(m, a);
+    mat4d_invert(a, inv);
     for (int i = 0; i < 16; i++)
-        a[i] = m[i];
-    inv[0] = a[5] * a[10] * a[15] - a[5] * a[11] * a[14] - a[9] * a[6] * a[15] + a[9] * a[7] * a[14] +
-             a[13] * a[6] * a[11] - a[13] * a[7] * a[10];
-    inv[4] = -a[4] * a[10] * a[15] + a[4] * a[11] * a[14] + a[8] * a[6] * a[15] - a[8] * a[7] * a[14] -
-             a[12] * a[6] * a[11] + a[12] * a[7] * a[10];
-    inv[8] = a[4] * a[9] * a[15] - a[4] * a[11] * a[13] - a[8] * a[5] * a[15] + a[8] * a[7] * a[13] +
-             a[12] * a[5] * a[11] - a[12] * a[7] * a[9];
-    inv[12] = -a[4] * a[9] * a[14] + a[4] * a[10] * a[13] + a[8] * a[5] * a[14] - a[8] * a[6] * a[13] -
-              a[12] * a[5] * a[10] + a[12] * a[6] * a[9];
-    inv[1] = -a[1] * a[10] * a[15] + a[1] * a[11] * a[14] + a[9] * a[2] * a[15] - a[9] * a[3] * a[14] -
-             a[13] * a[2] * a[11] + a[13] * a[3] * a[10];
-    inv[5] = a[0] * a[10] * a[15] - a[0] * a[11] * a[14] - a[8] * a[2] * a[15] + a[8] * a[3] * a[14] +
-             a[12] * a[2] * a[11] - a[12] * a[3] * a[10];
-    inv[9] = -a[0] * a[9] * a[15] + a[0] * a[11] * a[13] + a[8] * a[1] * a[15] - a[8] * a[3] * a[13] -
-             a[12] * a[1] * a[11] + a[12] * a[3] * a[9];
-    inv[13] = a[0] * a[9] * a[14] - a[0] * a[10] * a[13] - a[8] * a[1] * a[14] + a[8] * a[2] * a[13] +
-              a[12] * a[1] * a[10] - a[12] * a[2] * a[9];
-    inv[2] = a[1] * a[6] * a[15] - a[1] * a[7] * a[14] - a[5] * a[2] * a[15] + a[5] * a[3] * a[14] +
-             a[13] * a[2] * a[7] - a[13] * a[3] * a[6];
-    inv[6] = -a[0] * a[6] * a[15] + a[0] * a[7] * a[14] + a[4] * a[2] * a[15] - a[4] * a[3] * a[14] -
-             a[12] * a[2] * a[7] + a[12] * a[3] * a[6];
-    inv[10] = a[0] * a[5] * a[15] - a[0] * a[7] * a[13] - a[4] * a[1] * a[15] + a[4] * a[3] * a[13] +
-              a[12] * a[1] * a[7] - a[12] * a[3] * a[5];
-    inv[14] = -a[0] * a[5] * a[14] + a[0] * a[6] * a[13] + a[4] * a[1] * a[14] - a[4] * a[2] * a[13] -
-              a[12] * a[1] * a[6] + a[12] * a[2] * a[5];
-    inv[3] = -a[1] * a[6] * a[11] + a[1] * a[7] * a[10] + a[5] * a[2] * a[11] - a[5] * a[3] * a[10] -
-             a[9] * a[2] * a[7] + a[9] * a[3] * a[6];
-    inv[7] = a[0] * a[6] * a[11] - a[0] * a[7] * a[10] - a[4] * a[2] * a[11] + a[4] * a[3] * a[10] +
-             a[8] * a[2] * a[7] - a[8] * a[3] * a[6];
-    inv[11] = -a[0] * a[5] * a[11] + a[0] * a[7] * a[9] + a[4] * a[1] * a[11] - a[4] * a[3] * a[9] -
-              a[8] * a[1] * a[7] + a[8] * a[3] * a[5];
-    inv[15] = a[0] * a[5] * a[10] - a[0] * a[6] * a[9] - a[4] * a[1] * a[10] + a[4] * a[2] * a[9] +
-              a[8] * a[1] * a[6] - a[8] * a[2] * a[5];
-    double det = a[0] * inv[0] + a[1] * inv[4] + a[2] * inv[8] + a[3] * inv[12];
-    for (int i = 0; i < 16; i++)
-        out[i / 4][i % 4] = (float)(inv[i] / det);
+        out[i / 4][i % 4] = (float)inv[i];
 }
 
 /* The comparison that means the same with depth mirrored (d' = 1 - d). */

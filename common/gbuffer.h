@@ -102,6 +102,7 @@
 #define COMMON_GBUFFER_H
 
 #include "fbo.h"
+#include "gbuffer_layout_names.h"
 #include "gl_util.h"
 #include "gpu_scene.h"
 
@@ -114,27 +115,16 @@ typedef enum gbuffer_depth {
     GBUFFER_DEPTH_D32F_REVERSED,
 } gbuffer_depth;
 
+/* gbuffer_layouts[] holds one per gbuffer_layout_id (gbuffer_layout_names.h, whose one list of
+ * names the command line offers too). */
 typedef struct gbuffer_layout {
-    const char *name;     /* what --gbuffer takes */
+    const char *name;     /* what --gbuffer takes: GBUFFER_LAYOUT_LIST's */
     GLenum albedo_format; /* RT0 */
     GLenum normal_format; /* RT1 */
     int normal_encoding;  /* SHADER_GBUFFER_NORMAL_* */
     gbuffer_depth depth;
     const char *loses;    /* against the geometry pass's exact floats, in a few words */
 } gbuffer_layout;
-
-/* gbuffer_layouts[] in this order, which is cli_gbuffer_layouts[]'s (common/cli.h, the GL-free command
- * line, names them too; tests/gbuffer/test_gbuffer_layouts.c checks that they agree). */
-typedef enum gbuffer_layout_id {
-    GBUFFER_LAYOUT_REFERENCE,
-    GBUFFER_LAYOUT_COMPACT,
-    GBUFFER_LAYOUT_COMPACT_D24S8,
-    GBUFFER_LAYOUT_REVERSED_Z,
-    GBUFFER_LAYOUT_LINEAR_ALBEDO,
-    GBUFFER_LAYOUT_OCT8,
-    GBUFFER_LAYOUT_OCT16,
-    GBUFFER_LAYOUT_COUNT
-} gbuffer_layout_id;
 
 #define GBUFFER_LAYOUT_DEFAULT GBUFFER_LAYOUT_COMPACT
 

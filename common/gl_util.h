@@ -1,25 +1,14 @@
-/* gl_util.h - small OpenGL helpers every module uses.
+/* gl_util.h - small OpenGL helpers every module uses (shader programs: gl_program.h).
  *
- *   gl_program_load(vert, frag, defines)  compile + link shaders/<vert> and shaders/<frag>;
- *                                         `#include "x.glsl"` is expanded, `defines` ("A 1\nB 2")
- *                                         become #defines; errors name the file and line
- *   gl_program_create(name, vert_text, frag_text, defines)
- *                                         the same from source text in memory (tests); `name` labels
- *                                         its messages, and #include still reads from shaders/
- *   gl_compute_program_load(comp, defines)
- *                                         the same for one compute shader, shaders/<comp> (GL 4.3:
- *                                         the caller checks GLAD_GL_VERSION_4_3 first)
- *   gl_program_destroy(&program)
  *   gl_texture_create / gl_buffer_create / gl_framebuffer_create / gl_vertex_array_create / gl_query_create
  *   / gl_renderbuffer_create
  *   gl_texture_destroy / gl_buffer_destroy / gl_framebuffer_destroy / gl_vertex_array_destroy / ..._destroy
  *                                         create/delete pairs that count live objects
  *   gl_live_objects()                     objects created and not yet destroyed (leak checks)
+ *   gl_live_objects_add(delta)            count objects made without the pairs above (gl_program.c's)
  *   gl_check(where)                       glGetError loop; logs and returns false on error
  *   gl_debug_enable()                     KHR_debug messages to the log; errors are remembered
  *   gl_debug_error_count()                GL errors seen since gl_debug_enable (or by gl_check)
- *   gl_shader_dir()                       where shaders are read from: data_dir()/shaders, or
- *                                         $COURSE_SHADER_DIR
  *   gl_draw_fullscreen()                  one triangle covering the viewport (gl_VertexID based)
  *   gl_pass_state_apply(state)            blend, cull, depth test, depth write, depth clamp and the
  *                                         stencil test from one literal (zero fields: off)
@@ -33,6 +22,15 @@
  *                                         the buffer texture on texture unit `unit`, and the
  *                                         sampler `uniform` of `program` (in use) set to it
  *   gl_buffer_read(buffer, bytes, out)    the first `bytes` of a buffer back into memory
+ *   gl_read_rgba8(framebuffer, attachment, w, h, out)
+ *   gl_read_rgba_float(framebuffer, attachment, w, h, out)
+ *                                         colour attachment `attachment` of the framebuffer object
+ *                                         as w x h RGBA bytes or floats, bottom row first; the read
+ *                                         framebuffer binding is 0 again after
+ *   gl_read_depth(framebuffer, w, h, out) its depth as w x h floats in [0, 1], bottom row first
+ *   gl_have_compute()                     compute shaders on this context (GLAD_GL_VERSION_4_3), unless
+ *                                         $COURSE_NO_COMPUTE is set: the tests run the GL 3.3 paths on
+ *                                         a newer driver that way
  *   gl_samples_begin(query, on) / gl_samples_end(query, on)
  *                                         count the fragments that pass (GL_SAMPLES_PASSED) between
  *                                         the two; end returns the count, or -1 when `on` is false
@@ -40,14 +38,11 @@
 #ifndef COMMON_GL_UTIL_H
 #define COMMON_GL_UTIL_H
 
+#include "gl_program.h" /* for the callers that still take the program loader from here */
+
 #include <glad/gl.h>
 #include <stdbool.h>
 #include <stddef.h>
-
-GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
-GLuint gl_compute_program_load(const char *comp, const char *defines);
-GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
-void gl_program_destroy(GLuint *program);
 
 GLuint gl_texture_create(void);
 GLuint gl_buffer_create(void);
@@ -62,12 +57,12 @@ void gl_vertex_array_destroy(GLuint *id);
 void gl_query_destroy(GLuint *id);
 void gl_renderbuffer_destroy(GLuint *id);
 long gl_live_objects(void);
+void gl_live_objects_add(long delta);
 
 bool gl_check(const char *where);
 void gl_debug_enable(void);
 long gl_debug_error_count(void);
 
-const char *gl_shader_dir(void);
 void gl_draw_fullscreen(void);
 
 /* A pass's fixed-function state as one designated-initialiser literal, so a chapter's lesson reads
@@ -90,6 +85,10 @@ void gl_pass_state_reset(void);
 void gl_texture_buffer_upload(GLuint buffer, GLuint texture, GLenum format, const void *data, size_t bytes);
 void gl_texture_buffer_bind(GLuint program, const char *uniform, int unit, GLuint texture);
 void gl_buffer_read(GLuint buffer, size_t bytes, void *out);
+void gl_read_rgba8(GLuint framebuffer, int attachment, int width, int height, unsigned char *out);
+void gl_read_rgba_float(GLuint framebuffer, int attachment, int width, int height, float *out);
+void gl_read_depth(GLuint framebuffer, int width, int height, float *out);
+bool gl_have_compute(void);
 void gl_samples_begin(GLuint query, bool on);
 long gl_samples_end(GLuint query, bool on);
 void gl_util_shutdown(void);

@@ -2,6 +2,7 @@
 #include "light_volumes.h"
 
 #include "frame_timer.h"
+#include "gl_program.h"
 #include "log.h"
 
 #include <float.h>

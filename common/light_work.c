@@ -1,52 +1,11 @@
 /* light_work.c - see light_work.h. */
 #include "light_work.h"
 
+#include "gpu_scene.h"
+#include "mat4d.h"
+
 #include <float.h>
 #include <math.h>
-
-/* Element (row, col) of a column-major 4x4 matrix. */
-#define AT(m, row, col) (m)[4 * (col) + (row)]
-
-/* Determinant of the 3x3 matrix left when row `row` and column `col` are struck out of m. */
-static double minor_3x3(const double m[16], int row, int col)
-{
-    double s[3][3];
-    for (int i = 0, si = 0; i < 4; i++) {
-        if (i == row)
-            continue;
-        for (int j = 0, sj = 0; j < 4; j++)
-            if (j != col)
-                s[si][sj++] = AT(m, i, j);
-        si++;
-    }
-    return s[0][0] * (s[1][1] * s[2][2] - s[1][2] * s[2][1]) -
-           s[0][1] * (s[1][0] * s[2][2] - s[1][2] * s[2][0]) +
-           s[0][2] * (s[1][0] * s[2][1] - s[1][1] * s[2][0]);
-}
-
-/* Inverse of a column-major 4x4 matrix by cofactors (the adjugate over the determinant), in double:
- * the float inverse that the shaders use would put its own error into the "exact" count. */
-static bool invert_4x4(const double m[16], double out[16])
-{
-    double adj[16]; /* adj(i, j) is the cofactor of m(j, i) */
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++)
-            AT(adj, i, j) = ((i + j) % 2 ? -1.0 : 1.0) * minor_3x3(m, j, i);
-    double det = 0.0; /* expanded along the first column */
-    for (int k = 0; k < 4; k++)
-        det += AT(m, k, 0) * AT(adj, 0, k);
-    if (det == 0.0)
-        return false;
-    for (int i = 0; i < 16; i++)
-        out[i] = adj[i] / det;
-    return true;
-}
-
-static void to_double(const float *m, double out[16])
-{
-    for (int i = 0; i < 16; i++)
-        out[i] = m[i];
-}
 
 /* out = m * (x, y, z, 1), m column-major. */
 static void transform_point(const double m[16], double x, double y, double z, double out[4])
@@ -58,8 +17,9 @@ static void transform_point(const double m[16], double x, double y, double z, do
 void light_work_positions(const float *depth, int width, int height, const float *view_proj, double *out)
 {
     double vp[16], inv[16];
-    to_double(view_proj, vp);
-    bool ok = invert_4x4(vp, inv);
+    mat4d_from_float(view_proj, vp);
+    /* In double: a float inverse would put its own error into the "exact" count. */
+    bool ok = mat4d_invert(vp, inv);
     for (int y = 0; y < height; y++) {
         for (int x = 0; x < width; x++) {
             size_t i = (size_t)y * (size_t)width + (size_t)x;
@@ -115,7 +75,7 @@ long long light_work_ideal_pairs(const double *pos, int width, int height, const
                                  const gpu_light *lights, int count)
 {
     double vp[16];
-    to_double(view_proj, vp);
+    mat4d_from_float(view_proj, vp);
     long long pairs = 0;
     for (int k = 0; k < count; k++) {
         const gpu_light *l = &lights[k];

@@ -10,13 +10,13 @@
  *                                          light's radius; each light only looks at the pixels of
  *                                          its sphere's rectangle on screen
  *
- * depth is window depth in [0,1] as glReadPixels(GL_DEPTH_COMPONENT, GL_FLOAT) returns it
+ * depth is window depth in [0,1] as fbo_read_depth (glReadPixels of GL_DEPTH_COMPONENT) returns it
  * (bottom row first); view_proj is 16 floats, column-major, as cglm and GL store it.
  */
 #ifndef COMMON_LIGHT_WORK_H
 #define COMMON_LIGHT_WORK_H
 
-#include "gpu_scene.h"
+typedef struct gpu_light gpu_light; /* common/gpu_scene.h */
 
 void light_work_positions(const float *depth, int width, int height, const float *view_proj, double *out);
 long long light_work_ideal_pairs(const double *pos, int width, int height, const float *view_proj,

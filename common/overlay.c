@@ -1,6 +1,7 @@
 /* overlay.c - see overlay.h. */
 #include "overlay.h"
 
+#include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
 

@@ -1,6 +1,7 @@
 /* present_pass.c - see present_pass.h. */
 #include "present_pass.h"
 
+#include "gl_program.h"
 #include "gl_util.h"
 #include "shader_layout.h"
 

@@ -1,6 +1,6 @@
 /* shader_layout.h - every number the C code and the shaders must agree on, written once.
  *
- * Each X(NAME, VALUE) below is the C constant SHADER_NAME, and the program loader (gl_util.c)
+ * Each X(NAME, VALUE) below is the C constant SHADER_NAME, and the program loader (gl_program.c)
  * injects `#define SHADER_NAME VALUE` into every shader after its #version line, so a shader reads
  * SHADER_LIGHT_TEXELS exactly as the C code that fills the texture does.
  *

@@ -6,7 +6,7 @@
  *   Mesa     S:L(C): error: message
  *   NVIDIA   S(L) : error C0502: message
  *   AMD      ERROR: S:L: message
- * gl_util.c gives every #included file its own source string (#line L S), so S names the file.
+ * gl_program.c gives every #included file its own source string (#line L S), so S names the file.
  */
 #ifndef COMMON_SHADER_LOG_H
 #define COMMON_SHADER_LOG_H

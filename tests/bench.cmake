@@ -1,6 +1,7 @@
 # The forward-vs-deferred benchmark (tools/bench.c, docs/compare.md).
 # Its helpers live in tools/bench/ so the tools/*.c glob does not make them separate programs.
 target_sources(bench PRIVATE
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_error.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_gbuffer.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_gbuffer_report.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_measure.c
@@ -9,8 +10,7 @@ target_sources(bench PRIVATE
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_renderers.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_report.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_run.c
-  ${CMAKE_SOURCE_DIR}/tools/bench/bench_state.c
-  ${CMAKE_SOURCE_DIR}/tools/bench/bench_work.c)
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_state.c)
 
 # --quick runs a small sweep; the check is on the output's shape (columns, rows, finite numbers,
 # files), never on timings, which depend on the machine.

@@ -10,7 +10,7 @@
 # (the encodings themselves: unit.test_octahedral)
 
 add_executable(test_gbuffer_layouts ${CMAKE_CURRENT_SOURCE_DIR}/gbuffer/test_gbuffer_layouts.c)
-target_link_libraries(test_gbuffer_layouts PRIVATE common)
+target_link_libraries(test_gbuffer_layouts PRIVATE chapters)
 set_target_properties(test_gbuffer_layouts PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
 add_test(NAME gbuffer.layouts COMMAND test_gbuffer_layouts WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(gbuffer.layouts PROPERTIES LABELS golden SKIP_RETURN_CODE 77)

@@ -17,7 +17,7 @@ course_hard_program(hard_depth)
 # 1, 7, 8, 9, 11, 13: the renderers in-process (forward, chapter 03's full-screen pass, chapter 07's
 # light volumes), reading linear light and the RGBA16F accumulation buffer directly.
 add_executable(hard_shading ${HARD_DIR}/hard_shading.c ${HARD_DIR}/hard_util.c)
-target_link_libraries(hard_shading PRIVATE common)
+target_link_libraries(hard_shading PRIVATE chapters)
 set_target_properties(hard_shading PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
 set(HARD_SCENES ${CMAKE_SOURCE_DIR}/tests/scenes)
 foreach(case

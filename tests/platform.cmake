@@ -25,9 +25,11 @@ if(XVFB_RUN)
   endforeach()
 endif()
 
-# The window's frame time is a true frame time: it agrees with --bench (glFinish + monotonic clock
-# on llvmpipe) within 20 %. Measured on llvmpipe, 2 cores, 640x480, three runs: within 5 % for both
-# renderers (at 400x300 forward's 5 ms frames came within 14 %: too close to the bound).
+# The window's frame time is a true frame time: checked against the --bench clock of the same
+# process on the same frames (never against a run made at another moment, which a loaded machine
+# makes disagree): each title figure within [0.5 x min_ms, max_ms + 0.01] of the bench line, and
+# the title's passes summing to its frame figure; tests/run_window_timing.sh gives each tolerance's
+# reason. RUN_SERIAL is kept as for the other window tests; the verdict no longer needs it.
 if(XVFB_RUN AND TARGET 07_face_culling)
   add_test(NAME window.timing_matches_bench
     COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/run_window_timing.sh ${XVFB_RUN} $<TARGET_FILE:07_face_culling>

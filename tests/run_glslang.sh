@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # run_glslang.sh SHADER_DIR: every shader (.vert, .frag, .comp), with its #includes expanded and
-# shader_layout.h's constants injected the way common/gl_util.c does, must pass glslangValidator at
+# shader_layout.h's constants injected the way common/gl_program.c does, must pass glslangValidator at
 # the course's versions: GLSL 3.30 for vertex and fragment shaders (the course's minimum), 4.30 for
 # compute shaders (core since OpenGL 4.3). Each is checked in every variant the loader can build:
 #   - a shader with a line "// variants: A | B | ..." in every variant listed there (each: "NAME
@@ -28,7 +28,7 @@ expand() { # expand FILE DEPTH
   done < "$file"
 }
 
-# shader_layout.h's constants, as common/gl_util.c injects them after the #version line.
+# shader_layout.h's constants, as common/gl_program.c injects them after the #version line.
 layout=$(sed -n 's/^ *X(\([A-Z_]*\), *\([0-9-]*\)).*/#define SHADER_\1 \2/p' "$dir/../common/shader_layout.h")
 [ -n "$layout" ] || { echo "no constants found in common/shader_layout.h"; exit 1; }
 

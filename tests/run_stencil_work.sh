@@ -4,7 +4,7 @@
 #      on the default scene (1024 generated lights and its own 8) and the city (its 757 lights), and
 #      at least every ideal pair (ratio >= 0.999: a missed pair would be a missing light); and never
 #      more than chapter 07's deferred-volumes on the same frame. "Ideal" is counted exactly on the
-#      CPU from the depth buffer (tools/bench/bench_work.c: pairs whose surface point lies within the
+#      CPU from the depth buffer (common/light_work.c: pairs whose surface point lies within the
 #      light's radius). The 1.1 is the course's target; the volume mesh alone makes the ratio exceed
 #      1: an 80-face icosphere scaled by 1 / inradius reaches 7 % beyond the sphere.
 #   2. the same picture as deferred-volumes: the 8-bit error against the exact reference agrees

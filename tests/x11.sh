@@ -4,6 +4,8 @@
 #   x11_stop           kill what x11_start and x11_start_twm started (the caller's EXIT trap)
 # Both need x11_tmp, a scratch folder. Callers skip (77) first when Xvfb or twm is missing:
 #   x11_missing        prints "skip: ..." and returns 0 when a tool is not installed
+# The waits below poll for readiness and stop as soon as it comes: their limits (30 s) are only there
+# so a broken X never hangs a test, and sit far above a start-up on a loaded machine (ctest -j).
 x11_xvfb_pid="" x11_twm_pid=""
 
 x11_missing() {
@@ -26,7 +28,7 @@ x11_stop() {
 x11_start() {
   Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp -noreset 3>"$x11_tmp/display" 2>"$x11_tmp/xvfb.log" &
   x11_xvfb_pid=$!
-  for _ in $(seq 100); do
+  for _ in $(seq 600); do
     grep -q '^[0-9]' "$x11_tmp/display" 2>/dev/null && break
     kill -0 "$x11_xvfb_pid" 2>/dev/null || break
     sleep 0.05
@@ -52,14 +54,15 @@ IconManagerFont "fixed"
 TWMRC
   LC_ALL=C twm -f "$x11_tmp/twmrc" >"$x11_tmp/twm.log" 2>&1 &
   x11_twm_pid=$!
-  # twm marks the root window once it manages the screen; without xprop, give it a second.
+  # twm marks the root window once it manages the screen; without xprop, give it a few seconds
+  # (a guess: xprop, from x11-utils, which scripts/install-deps.sh installs, is what to rely on).
   if command -v xprop >/dev/null 2>&1; then
-    for _ in $(seq 100); do
+    for _ in $(seq 600); do
       xprop -root 2>/dev/null | grep -q _MIT_PRIORITY_COLORS && break
       sleep 0.05
     done
   else
-    sleep 1
+    sleep 3
   fi
   if ! kill -0 "$x11_twm_pid" 2>/dev/null; then
     echo "FAIL: twm did not start: $(tail -2 "$x11_tmp/twm.log")"

@@ -13,7 +13,7 @@
  * This file is the top-level flow; the parts live in tools/bench/:
  *   bench_options    the command line          bench_run      the cases and their timing
  *   bench_renderers  the renderers compared    bench_measure  reference, work, error, read-backs
- *   bench_state      options, machine, rows    bench_work     the CPU side of work and error
+ *   bench_state      options, machine, rows    bench_error    a picture's error against the exact one
  *   bench_report     bench.csv and bench.md    bench_plots    the gnuplot script and plots
  *   bench_gbuffer    the G-buffer layouts: bytes, time and precision (--gbuffer-sweep)
  */

@@ -14,6 +14,7 @@
  */
 #include "cli.h"
 #include "fbo.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "image.h"
 #include "log.h"

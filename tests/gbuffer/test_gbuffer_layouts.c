@@ -21,7 +21,7 @@
 #include "image.h"
 #include "light.h"
 #include "platform.h"
-#include "renderers.h"
+#include "chapters.h"
 #include "scene.h"
 
 #include <math.h>
@@ -126,18 +126,10 @@ typedef struct frame_set {
     deferred_volumes dv;
 } frame_set;
 
-/* Chapter 07's frame with a layout, as tools/bench/bench_gbuffer.c draws it. */
+/* Chapter 07's frame with a layout, as the G-buffer sweep draws it (chapter_07_draw_with). */
 static bool draw_07(frame_set *f, const gpu_scene *gs)
 {
-    gl_pass_state pass = renderer_volume_pass;
-    gpu_scene view;
-    if (!gbuffer_render(&f->g, gs))
-        return false;
-    gbuffer_depth_test_begin(&f->g, gs, &view, &pass);
-    const deferred_volumes_frame frame = {.volume_state = &pass, .accum_format = GL_RGBA16F};
-    bool ok = deferred_volumes_render(&f->dv, &f->g, &view, f->target.id, &frame);
-    gbuffer_depth_test_end(&f->g);
-    return ok;
+    return chapter_07_draw_with(&f->g, &f->dv, gs, f->target.id, (deferred_volumes_frame){.accum_format = GL_RGBA16F});
 }
 
 static bool read_picture(const fbo *f, image *img)
@@ -195,9 +187,8 @@ static void check_reversed_scene(const char *scene_name)
              gbuffer_create_with(&f[k].g, WIDTH, HEIGHT, &(gbuffer_desc){.layout = layouts[k]}) &&
              deferred_volumes_create(&f[k].dv, &f[k].g, GL_RGBA16F) && draw_07(&f[k], &gs) &&
              read_picture(&f[k].target, &pictures[k]) && read_depth(&f[k].g.fbo, depth[k]);
-    renderer_set r;
-    renderers_create(&r);
-    ok = ok && renderers_draw(&r, RENDERER_FORWARD, &gs, f[0].target.id, (renderer_draw_options){0}, NULL) &&
+    app_forward r = {0}; /* the forward renderer every chapter switches to */
+    ok = ok && app_forward_draw(&r, "forward", &gs, f[0].target.id, (app_forward_options){0}, NULL) &&
          read_picture(&f[0].target, &pictures[2]);
     snprintf(what, sizeof what, "%s: chapter 07's frame drawn with compact, reversed-z and forward",
              scene_name);
@@ -227,7 +218,7 @@ static void check_reversed_scene(const char *scene_name)
         compare(scene_name, "reversed-z", &pictures[1], "compact (standard depth)", &pictures[0]);
         compare(scene_name, "reversed-z", &pictures[1], "forward", &pictures[2]);
     }
-    renderers_destroy(&r);
+    app_forward_destroy(&r);
     for (int k = 0; k < 3; k++)
         image_destroy(&pictures[k]);
     for (int k = 0; k < 2; k++) {

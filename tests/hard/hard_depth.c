@@ -97,8 +97,7 @@ static result measure(depth_kind kind, double n, double f, double dist)
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 
     float depth[SIZE * SIZE];
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, SIZE, SIZE, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
+    gl_read_depth(framebuffer, SIZE, SIZE, depth);
     if (reversed)
         glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     glDepthFunc(GL_LESS);

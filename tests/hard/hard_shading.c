@@ -20,10 +20,11 @@
 #include "hard_util.h"
 
 #include "app.h"
+#include "chapters.h"
 #include "gl_util.h"
 #include "image.h"
 #include "light.h"
-#include "renderers.h"
+#include "course_renderers.h"
 
 #include <float.h>
 #include <math.h>
@@ -36,8 +37,8 @@
 
 typedef enum renderer { FORWARD, FULLSCREEN, VOLUMES, TESTED_COUNT } renderer;
 static const char *const RENDERER_NAMES[TESTED_COUNT] = {"forward", "fullscreen", "volumes"};
-static const renderer_id RENDERER_IDS[TESTED_COUNT] = {RENDERER_FORWARD, RENDERER_DEFERRED_FULLSCREEN,
-                                                       RENDERER_DEFERRED_VOLUMES};
+/* The chapters that draw them (chapters/course_renderers.c), run in-process. */
+static const char *const COURSE_NAMES[TESTED_COUNT] = {"forward", "deferred-fullscreen", "deferred-volumes"};
 
 /* One call of shade_light per draw, inputs from uniforms, into a 1x1 RGBA32F target. */
 static const char *const PROBE_VERT =
@@ -61,7 +62,9 @@ static const char *const PROBE_FRAG =
 
 static struct {
     int width, height;
-    renderer_set rs; /* the course's renderer table */
+    course_set chapters; /* the chapters, embedded */
+    gbuffer g;           /* chapter 07's frame with another accumulation format or view */
+    deferred_volumes dv;
     fbo target; /* RGBA8 + D32F, like the app's */
     fbo linear; /* RGBA32F + D32F */
 } state;
@@ -79,9 +82,10 @@ static bool setup_create(int width, int height)
                              .color_count = 1,
                              .depth_format = GL_DEPTH_COMPONENT32F,
                              .name = "linear"};
-    renderers_create(&state.rs);
+    memset(&state.chapters, 0, sizeof state.chapters);
     bool ok = fbo_create(&state.target, &target, width, height) &&
-              fbo_create(&state.linear, &linear, width, height);
+              fbo_create(&state.linear, &linear, width, height) && gbuffer_create(&state.g, width, height) &&
+              deferred_volumes_create(&state.dv, &state.g, GL_RGBA16F);
     return hard_expect(ok, "renderers created at %dx%d", width, height);
 }
 
@@ -89,7 +93,9 @@ static void setup_destroy(void)
 {
     fbo_destroy(&state.linear);
     fbo_destroy(&state.target);
-    renderers_destroy(&state.rs);
+    deferred_volumes_destroy(&state.dv);
+    gbuffer_destroy(&state.g);
+    course_set_destroy(&state.chapters);
 }
 
 typedef struct loaded {
@@ -126,13 +132,33 @@ static void unload(loaded *l)
 
 /* ---- rendering ------------------------------------------------------------------------------- */
 
+/* Course renderer `name`'s chapter, embedded. */
+static app_embed *chapter(const char *name, const gpu_scene *gs)
+{
+    return course_set_embed(&state.chapters, course_renderer_find(name), gs);
+}
+
+/* One frame of renderer r; with count, the fragments its lighting pass shaded into *shaded. */
+static bool draw(renderer r, loaded *l, bool count, long *shaded)
+{
+    app_embed *e = chapter(COURSE_NAMES[r], &l->gs);
+    app_embed_work work;
+    bool ok = e && app_embed_frame(e, &l->gs, count, &work);
+    if (ok && shaded)
+        *shaded = work.shaded;
+    return ok;
+}
+
+/* The target renderer r drew into: RGBA8 + D32F, like the app's. */
+static const fbo *drawn(renderer r) { return app_embed_target(chapter(COURSE_NAMES[r], NULL)); }
+
 /* The display-encoded picture (RGBA8, top row first) of renderer r. */
 static bool render(renderer r, loaded *l, double cutoff, image *out)
 {
     if (!gpu_scene_update(&l->gs, 0.0f, cutoff, state.width, state.height))
         return false;
-    bool ok = renderers_draw(&state.rs, RENDERER_IDS[r], &l->gs, state.target.id, (renderer_draw_options){0}, NULL);
-    ok = ok && image_create(out, state.width, state.height) && fbo_read_rgba8(&state.target, 0, out->pixels);
+    bool ok = draw(r, l, false, NULL);
+    ok = ok && image_create(out, state.width, state.height) && fbo_read_rgba8(drawn(r), 0, out->pixels);
     if (ok)
         image_flip_rows(out);
     return hard_expect(ok && gl_check(RENDERER_NAMES[r]), "render %s at cut-off %g", RENDERER_NAMES[r],
@@ -144,16 +170,15 @@ static bool render_linear(loaded *l, double cutoff, float *out)
 {
     if (!gpu_scene_update(&l->gs, 0.0f, cutoff, state.width, state.height))
         return false;
-    const renderer_draw_options linear = {.linear_output = true};
-    if (!renderers_draw(&state.rs, RENDERER_FORWARD_NAIVE, &l->gs, state.linear.id, linear, NULL))
+    app_embed *naive = chapter("forward-naive", &l->gs);
+    if (!naive || !app_embed_frame(naive, &l->gs, false, NULL) || !app_embed_read_linear(naive, &l->gs, out))
         return false;
-    hard_read_rgba_float(state.linear.id, state.width, state.height, out);
     /* Alpha marks coverage for the checks: 1 where a surface was drawn (depth < 1), else 0. */
     size_t n = (size_t)state.width * state.height;
     float *depth = malloc(n * sizeof *depth);
     if (!depth)
         return hard_expect(false, "memory for a %dx%d depth read-back", state.width, state.height);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, state.linear.id);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, app_embed_target(naive)->id);
     glReadPixels(0, 0, state.width, state.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     for (size_t i = 0; i < n; i++)
@@ -537,11 +562,7 @@ static int run_overlap(const char *path)
             double best = 1e30;
             for (int frame = 0; frame < 2; frame++) {
                 double t0 = now_ms();
-                renderer_result res;
-                renderers_draw(&state.rs, RENDERER_IDS[r], &l.gs, state.target.id,
-                               (renderer_draw_options){.count_pixels = r == VOLUMES}, &res);
-                if (r == VOLUMES)
-                    shaded = res.shaded;
+                draw((renderer)r, &l, r == VOLUMES, r == VOLUMES ? &shaded : NULL);
                 glFinish();
                 best = fmin(best, now_ms() - t0);
             }
@@ -573,7 +594,7 @@ static int run_hdr(const char *path_a, const char *path_b)
         image img[TESTED_COUNT];
         for (int r = 0; r < TESTED_COUNT; r++)
             render((renderer)r, &l, LIGHT_DEFAULT_CUTOFF, &img[r]);
-        hard_read_rgba_float(renderers_accum(&state.rs)->id, w, h, accum);
+        app_embed_read_linear(chapter(COURSE_NAMES[VOLUMES], &l.gs), &l.gs, accum); /* its sum */
         long nan = 0, inf = 0, over = 0, finite_max_count = 0;
         float largest = 0;
         for (int i = 0; i < w * h * 4; i++) {
@@ -688,15 +709,11 @@ static int run_degenerate(const char *path)
  * other side of it than forward's (docs/hard-cases.md, case 13). */
 static bool render_volumes_linear(loaded *l, GLenum accum_format, light_volumes_view view, float *out)
 {
-    const deferred_volumes_frame f = {
-        .volume_state = &renderer_volume_pass, .accum_format = accum_format, .view = view};
-    /* The table's draw makes the renderer and fills the G-buffer; then the same frame again with
-     * another accumulation format or view. */
-    if (!renderers_draw(&state.rs, RENDERER_DEFERRED_VOLUMES, &l->gs, state.target.id,
-                        (renderer_draw_options){0}, NULL) ||
-        !deferred_volumes_render(&state.rs.volumes, &state.rs.g, &l->gs, state.target.id, &f))
+    /* Chapter 07's frame, with another accumulation format or view */
+    const deferred_volumes_frame how = {.accum_format = accum_format, .view = view};
+    if (!chapter_07_draw_with(&state.g, &state.dv, &l->gs, state.target.id, how))
         return false;
-    hard_read_rgba_float(renderers_accum(&state.rs)->id, state.width, state.height, out);
+    hard_read_rgba_float(state.dv.accum.id, state.width, state.height, out);
     return true;
 }
 

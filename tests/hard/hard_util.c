@@ -1,6 +1,7 @@
 /* hard_util.c - see hard_util.h. */
 #include "hard_util.h"
 
+#include "gl_program.h"
 #include "gl_util.h"
 #include "platform.h"
 
@@ -30,11 +31,7 @@ GLuint hard_program_create(const char *vert, const char *frag)
 
 void hard_read_rgba_float(GLuint fbo, int width, int height, float *out)
 {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    gl_read_rgba_float(fbo, 0, width, height, out);
 }
 
 bool hard_expect(bool ok, const char *fmt, ...)

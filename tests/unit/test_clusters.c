@@ -1,6 +1,7 @@
-/* test_clusters.c - chapter 11's clusters without GL (common/cluster_grid.c, compiled in by
- * tests/chapter_11.cmake): the slice of a depth, and the conservative assignment: a sphere is listed in
- * every cluster that a point of it falls in, and in no cluster whose box it cannot reach. */
+/* test_clusters.c - chapter 11's clusters without GL (common/cluster_grid.c and cluster_lists.c,
+ * compiled in by tests/chapter_11.cmake and tests/CMakeLists.txt): the slice of a depth, and the
+ * conservative assignment: a sphere is listed in every cluster that a point of it falls in, and in no
+ * cluster whose box it cannot reach. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -11,6 +12,7 @@
 #include "test_util.h"
 
 #include "cluster_grid.h"
+#include "cluster_lists.h"
 #include "rng.h"
 
 #include <cglm/cglm.h>

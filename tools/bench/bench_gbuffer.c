@@ -12,7 +12,7 @@
 #include "gl_util.h"
 #include "light.h"
 #include "log.h"
-#include "renderers.h"
+#include "chapters.h"
 #include "scene.h"
 
 #include <math.h>
@@ -157,19 +157,10 @@ static bool read_floats(const fbo *f, int attachment, float *out)
     return gl_check("bench_gbuffer read");
 }
 
-/* Chapter 07's frame with layout l: geometry pass, then the depth-tested volumes (their comparison
- * and projection mirrored for reversed-Z, gbuffer_depth_test_begin), then present into target. */
+/* Chapter 07's frame with layout l (chapters/07_face_culling.c, chapter_07_draw_with). */
 static bool draw_frame(sweep_gl *s, int l, const gpu_scene *gs, GLuint target)
 {
-    gl_pass_state pass = renderer_volume_pass;
-    gpu_scene view;
-    if (!gbuffer_render(&s->g[l], gs))
-        return false;
-    gbuffer_depth_test_begin(&s->g[l], gs, &view, &pass);
-    const deferred_volumes_frame f = {.volume_state = &pass, .accum_format = GL_RGBA16F};
-    bool ok = deferred_volumes_render(&s->dv[l], &s->g[l], &view, target, &f);
-    gbuffer_depth_test_end(&s->g[l]);
-    return ok;
+    return chapter_07_draw_with(&s->g[l], &s->dv[l], gs, target, (deferred_volumes_frame){.accum_format = GL_RGBA16F});
 }
 
 /* The float position and normal of every covered pixel, as the geometry pass computes them. */

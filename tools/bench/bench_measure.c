@@ -1,9 +1,10 @@
 /* bench_measure.c - see bench_measure.h. */
 #include "bench_measure.h"
 
-#include "bench_work.h"
+#include "bench_error.h"
 
 #include "gl_util.h"
+#include "light_work.h"
 #include "log.h"
 
 #include <math.h>
@@ -45,15 +46,6 @@ double bench_measure_now_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
-static bool read_depth(const fbo *f, float *out)
-{
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, f->id);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, f->width, f->height, GL_DEPTH_COMPONENT, GL_FLOAT, out);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    return gl_check("read_depth");
-}
-
 /* Forward, fp32, cut-off 0 (every light reaches every pixel): the same shading model with nothing
  * truncated. Kept while the (scene, lights) stay: it is the slowest frame of a case. */
 bool bench_measure_make_reference(bench_measure *m, bench_renderers *br, gpu_scene *gs, const char *key,
@@ -87,7 +79,7 @@ void bench_measure_forget_reference(bench_measure *m)
 bool bench_measure_count_ideal(bench_measure *m, bench_renderers *br, const gpu_scene *gs, bench_ideal *out)
 {
     if (!bench_render_frame(br, bench_renderer_depth_source(), gs, false, NULL) ||
-        !read_depth(bench_renderers_target(br), m->depth))
+        !fbo_read_depth(bench_renderers_target(br), m->depth))
         return false;
     const float *view_proj = (const float *)gs->view.view_proj;
     light_work_positions(m->depth, m->width, m->height, view_proj, m->positions);
@@ -110,7 +102,7 @@ static bool measure_error(bench_measure *m, bench_renderers *br, const gpu_scene
     if (!isfinite(row->error8.psnr) || row->error8.psnr > BENCH_PSNR_CAP)
         row->error8.psnr = BENCH_PSNR_CAP;
     if (bench_read_linear(br, row->renderer, gs, m->hdr)) {
-        bench_work_hdr_error(m->hdr, m->ref_hdr, m->width, m->height, &row->error_hdr);
+        bench_error_measure_hdr(m->hdr, m->ref_hdr, m->width, m->height, &row->error_hdr);
         row->have_error_hdr = true;
     }
     return true;

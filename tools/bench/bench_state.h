@@ -16,7 +16,7 @@
 #define TOOLS_BENCH_STATE_H
 
 #include "bench_options.h"
-#include "bench_work.h"
+#include "bench_error.h"
 
 #include "image.h"
 

@@ -1,9 +1,10 @@
-/* bench_work.c - see bench_work.h. */
-#include "bench_work.h"
+/* bench_error.c - see bench_error.h. */
+#include "bench_error.h"
 
 #include <math.h>
+#include <stddef.h>
 
-void bench_work_hdr_error(const float *a, const float *b, int width, int height, bench_error *out)
+void bench_error_measure_hdr(const float *a, const float *b, int width, int height, bench_error *out)
 {
     size_t n = (size_t)width * (size_t)height;
     double max_abs = 0.0, sum = 0.0, sum2 = 0.0;

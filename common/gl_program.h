@@ -1,0 +1,33 @@
+/* gl_program.h - shader programs from the files in shaders/: the GLSL `#include` expander and the
+ * compile and link steps, with errors at their file and line.
+ *
+ *   gl_program_load(vert, frag, defines)  compile + link shaders/<vert> and shaders/<frag>;
+ *                                         `#include "x.glsl"` is expanded, `defines` ("A 1\nB 2")
+ *                                         become #defines; errors name the file and line
+ *   gl_program_create(name, vert_text, frag_text, defines)
+ *                                         the same from source text in memory (tests); `name` labels
+ *                                         its messages, and #include still reads from shaders/
+ *   gl_compute_program_load(comp, defines)
+ *                                         the same for one compute shader, shaders/<comp> (GL 4.3:
+ *                                         the caller checks gl_have_compute() first)
+ *   gl_program_destroy(&program)
+ *   gl_shader_dir()                       where shaders are read from: data_dir()/shaders, or
+ *                                         $COURSE_SHADER_DIR
+ *
+ * After the #version line every program gets the `defines`, then shader_layout.h's constants as
+ * #defines (SHADER_...). Each included file is its own GLSL source-string number (#line L S), so
+ * the driver's messages can be put back at the file they came from (shader_log.h). Programs count
+ * in gl_live_objects() (gl_util.h).
+ */
+#ifndef COMMON_GL_PROGRAM_H
+#define COMMON_GL_PROGRAM_H
+
+#include <glad/gl.h>
+
+GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
+GLuint gl_compute_program_load(const char *comp, const char *defines);
+GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
+void gl_program_destroy(GLuint *program);
+const char *gl_shader_dir(void);
+
+#endif
