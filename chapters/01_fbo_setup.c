@@ -11,6 +11,7 @@
  */
 #include "app.h"
 #include "chapters.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
 

@@ -12,6 +12,7 @@
 #include "chapters.h"
 #include "deferred_fullscreen.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
 

@@ -35,6 +35,7 @@
 #include "debug_views.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 #include "light_batches.h"
 #include "log.h"
 

@@ -26,6 +26,7 @@
 #include "debug_views.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 
 #include <string.h>
 

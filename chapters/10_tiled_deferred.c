@@ -25,6 +25,7 @@
 #include "app.h"
 #include "chapters.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 #include "light_batches.h"
 #include "tile_cull.h"
 
@@ -152,8 +153,7 @@ static bool depth_bounds_reduce(app *a)
     gbuffer_bind_textures(&state.g, &a->gs, state.bounds_program, SHADER_UNIT_GBUFFER);
     tile_bind_view(state.bounds_program, &a->gs.view);
     gl_draw_fullscreen();
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, state.tiles_x, state.tiles_y, GL_RGBA, GL_FLOAT, state.tile_bounds);
+    gl_read_rgba_float(state.bounds.id, 0, state.tiles_x, state.tiles_y, state.tile_bounds); /* the read-back */
     gl_pass_state_reset();
     return gl_check("10 tile depth bounds");
 }

@@ -25,6 +25,7 @@
 #include "clusters.h"
 #include "forward.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 #include "log.h"
 
 #include <stdio.h>

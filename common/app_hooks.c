@@ -10,7 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MINIMISE_WAIT 2.0 /* seconds --minimise-cycle waits for the window manager to iconify */
+#define MINIMISE_WAIT 30.0 /* seconds --minimise-cycle waits for the window manager to iconify (polled:
+                            * a loaded machine may take seconds, an idle one returns at once) */
 #define MINIMISED_FOR 0.1 /* seconds it stays minimised before the loop asks for it back */
 
 void app_hooks_init(app_hooks *h, const cli_options *opt)

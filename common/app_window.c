@@ -210,9 +210,7 @@ static void count_ideal(app_window *w, app *a)
     double *positions = malloc(4 * n * sizeof *positions);
     if (depth && positions && (w->ideal_target.id || fbo_create(&w->ideal_target, &d, a->width, a->height)) &&
         app_forward_draw(&a->forward, "forward", &a->gs, w->ideal_target.id, (app_forward_options){0}, NULL)) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, w->ideal_target.id);
-        glReadPixels(0, 0, a->width, a->height, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        fbo_read_depth(&w->ideal_target, depth);
         const float *vp = (const float *)a->gs.view.view_proj;
         light_work_positions(depth, a->width, a->height, vp, positions);
         w->ideal = light_work_ideal_pairs(positions, a->width, a->height, vp, a->gs.lights, a->gs.light_count);

@@ -2,6 +2,7 @@
 #include "forward.h"
 
 #include "frame_timer.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
 

@@ -38,7 +38,6 @@
 #ifndef COMMON_GL_UTIL_H
 #define COMMON_GL_UTIL_H
 
-#include "gl_program.h" /* for the callers that still take the program loader from here */
 
 #include <glad/gl.h>
 #include <stdbool.h>

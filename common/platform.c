@@ -17,7 +17,7 @@
 #include <string.h>
 #include <time.h>
 
-#define RESTORE_WAIT 2.0 /* seconds platform_poll waits for a window it asked back (test hook) */
+#define RESTORE_WAIT 30.0 /* seconds platform_poll waits for a window it asked back (test hook; polled) */
 
 static struct {
     backend_kind backend;

@@ -3,7 +3,7 @@
  *
  * The parser works one line at a time: check the bytes (length, NUL, control bytes, UTF-8),
  * copy the line into a buffer, cut it into tokens, and hand the tokens to the function for
- * the line's directive (scene_directives.c, reading them with scene_tokens.c). Every error is
+ * the line's directive (scene_directives.c, reading them with scene_parser.c). Every error is
  * reported once, as "PATH:LINE: message", at the place where it is detected; the partly built
  * scene is then freed and the caller's left zeroed.
  */

@@ -1,7 +1,7 @@
 /* scene_directives.c - one function per scene directive (camera, ambient, material, mesh, object,
  * falloff), each reading the rest of its line into the scene being built, and the dispatch by the
  * line's first word; the lights (light, spot) and their keys are in scene_lights.c. The format and
- * its limits are in docs/scene-format.md; the token readers are in scene_tokens.c.
+ * its limits are in docs/scene-format.md; the token readers are in scene_parser.c.
  */
 #include "scene_parser.h"
 

@@ -1,7 +1,7 @@
 /* scene_parser.h - the parser state and the helpers that the scene parser's files share (internal:
- * only scene.c, scene_tokens.c, scene_directives.c and scene_lights.c include it; everyone else uses scene.h).
+ * only scene.c, scene_parser.c, scene_directives.c and scene_lights.c include it; everyone else uses scene.h).
  *
- * scene_tokens.c:
+ * scene_parser.c:
  *   scene_parser_fail(p, fmt, ...)                       log "NAME:LINE: message"; returns false
  *   scene_parser_show_token(token)                       a token cut to fit in a message
  *   scene_parser_append(p, array, &n, &cap, &e, size)    add e to an array that grows by doubling

@@ -28,7 +28,7 @@ if(COURSE_FUZZ)
   endif()
   # The parser is compiled into the target (not linked from common_core) so that it carries
   # libFuzzer's coverage instrumentation too.
-  set(COURSE_FUZZ_SOURCES_scene ${CMAKE_SOURCE_DIR}/common/scene.c ${CMAKE_SOURCE_DIR}/common/scene_tokens.c
+  set(COURSE_FUZZ_SOURCES_scene ${CMAKE_SOURCE_DIR}/common/scene.c ${CMAKE_SOURCE_DIR}/common/scene_parser.c
     ${CMAKE_SOURCE_DIR}/common/scene_directives.c ${CMAKE_SOURCE_DIR}/common/scene_lights.c
     ${CMAKE_SOURCE_DIR}/common/log.c)
   set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/cli.c ${CMAKE_SOURCE_DIR}/common/keys.c

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # run_no_compute.sh CHAPTER OUT_DIR OPTION - a chapter whose --OPTION chooses between compute shaders
 # ("compute") and the GL 3.3 path ("cpu"): chapter 10's --path, chapter 11's --assign. On a context
-# without compute shaders, simulated on a newer driver with COURSE_NO_COMPUTE=1 (common/renderers.c,
+# without compute shaders, simulated on a newer driver with COURSE_NO_COMPUTE=1 (common/gl_util.c,
 # gl_have_compute):
 #   --OPTION compute fails: exit 1 and one line on stderr that says why and what to use instead;
 #   no --OPTION takes the GL 3.3 path, and draws what --OPTION cpu draws (byte for byte).

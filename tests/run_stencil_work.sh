@@ -10,7 +10,7 @@
 #   2. the same picture as deferred-volumes: the 8-bit error against the exact reference agrees
 #      within 1 level at most and 0.01 on average (the batches add the lights up in another order, and
 #      half floats round each sum: measured 47 and 47, mean 14.3887 and 14.3882 at 64 lights);
-#   3. the chapter binary shades exactly what the benchmark's copy of it shades (renderers.c), with
+#   3. the chapter binary shades exactly what the benchmark shades (the chapter itself, run in-process), with
 #      batches and without (batching changes the draws, not the work), and more without the
 #      stencil reset (--reset off: stale counts are shaded again).
 # Exit 77 (no GL context) passes through as a skip.

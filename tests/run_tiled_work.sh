@@ -7,7 +7,7 @@
 #      lights and its own 757), and at least every ideal pair (ratio >= 0.999: a missed pair would be
 #      a missing light). "Ideal" is counted exactly on the CPU from the depth buffer
 #      (common/light_work.c: pairs whose surface point lies within the light's radius).
-#   2. the chapter counts exactly what the benchmark's copy of it counts (common/renderers.c), on
+#   2. the chapter counts exactly what the benchmark counts (the chapter itself, run in-process), on
 #      each path: the compute shader's lists, and the GL 3.3 path's (COURSE_NO_COMPUTE=1 makes the
 #      benchmark take it); and both paths make the same lists (the same count).
 #   3. --tile-lights 16 on that frame: the tiles with more lights loop over every light, so the

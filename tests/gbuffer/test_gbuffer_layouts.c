@@ -139,15 +139,6 @@ static bool read_picture(const fbo *f, image *img)
     return fbo_read_rgba8(f, 0, img->pixels);
 }
 
-static bool read_depth(const fbo *f, float *out)
-{
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, f->id);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, f->width, f->height, GL_DEPTH_COMPONENT, GL_FLOAT, out);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    return gl_check("read_depth");
-}
-
 static void compare(const char *scene_name, const char *what_a, const image *a, const char *what_b,
                     const image *b)
 {
@@ -186,7 +177,7 @@ static void check_reversed_scene(const char *scene_name)
         ok = depth[k] && fbo_create(&f[k].target, &target, WIDTH, HEIGHT) &&
              gbuffer_create_with(&f[k].g, WIDTH, HEIGHT, &(gbuffer_desc){.layout = layouts[k]}) &&
              deferred_volumes_create(&f[k].dv, &f[k].g, GL_RGBA16F) && draw_07(&f[k], &gs) &&
-             read_picture(&f[k].target, &pictures[k]) && read_depth(&f[k].g.fbo, depth[k]);
+             read_picture(&f[k].target, &pictures[k]) && fbo_read_depth(&f[k].g.fbo, depth[k]);
     app_forward r = {0}; /* the forward renderer every chapter switches to */
     ok = ok && app_forward_draw(&r, "forward", &gs, f[0].target.id, (app_forward_options){0}, NULL) &&
          read_picture(&f[0].target, &pictures[2]);

@@ -178,9 +178,7 @@ static bool render_linear(loaded *l, double cutoff, float *out)
     float *depth = malloc(n * sizeof *depth);
     if (!depth)
         return hard_expect(false, "memory for a %dx%d depth read-back", state.width, state.height);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, app_embed_target(naive)->id);
-    glReadPixels(0, 0, state.width, state.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    fbo_read_depth(app_embed_target(naive), depth);
     for (size_t i = 0; i < n; i++)
         out[4 * i + 3] = depth[i] < 1.0f ? 1.0f : 0.0f;
     free(depth);
@@ -321,7 +319,7 @@ static int run_shade(void)
         glBindVertexArray(vao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         float got[4];
-        hard_read_rgba_float(target.id, 1, 1, got);
+        gl_read_rgba_float(target.id, 0, 1, 1, got);
         double want[3];
         shade_reference(q, want);
         double worst = 0;
@@ -713,7 +711,7 @@ static bool render_volumes_linear(loaded *l, GLenum accum_format, light_volumes_
     const deferred_volumes_frame how = {.accum_format = accum_format, .view = view};
     if (!chapter_07_draw_with(&state.g, &state.dv, &l->gs, state.target.id, how))
         return false;
-    hard_read_rgba_float(state.dv.accum.id, state.width, state.height, out);
+    gl_read_rgba_float(state.dv.accum.id, 0, state.width, state.height, out);
     return true;
 }
 

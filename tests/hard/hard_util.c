@@ -29,11 +29,6 @@ GLuint hard_program_create(const char *vert, const char *frag)
     return gl_program_create("test program", vert, frag, NULL);
 }
 
-void hard_read_rgba_float(GLuint fbo, int width, int height, float *out)
-{
-    gl_read_rgba_float(fbo, 0, width, height, out);
-}
-
 bool hard_expect(bool ok, const char *fmt, ...)
 {
     va_list ap;

@@ -4,9 +4,6 @@
  *                                         when no context can be made
  *   hard_program_create(vert, frag)       a program from source text; a line `#include "shading.glsl"`
  *                                         pulls in the course's one shading model from the shader dir
- *   hard_read_rgba_float(fbo, w, h, out)  colour attachment 0 as RGBA floats, bottom row first (the
- *                                         same as gl_read_rgba_float(fbo, 0, w, h, out), which new
- *                                         code calls)
  *   hard_expect(ok, fmt, ...)             print "ok"/"FAIL" and the message; failures are counted
  *   hard_failures()                       how many hard_expect calls failed
  *   hard_finish()                         GL errors count as failures; returns the exit code
@@ -25,7 +22,6 @@
 
 void hard_context_create(int width, int height);
 GLuint hard_program_create(const char *vert, const char *frag);
-void hard_read_rgba_float(GLuint fbo, int width, int height, float *out);
 bool hard_expect(bool ok, const char *fmt, ...) LOG_PRINTF(2, 3);
 int hard_failures(void);
 int hard_finish(void);

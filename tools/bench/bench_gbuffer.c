@@ -3,12 +3,13 @@
 #include "bench_gbuffer_rows.h"
 
 #include "bench_report.h"
-#include "bench_work.h"
+#include "bench_error.h"
 
 #include "deferred_volumes.h"
 #include "frame_stats.h"
 #include "frame_timer.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "light.h"
 #include "log.h"
@@ -147,16 +148,6 @@ static bool sweep_create(sweep_gl *s, int width, int height)
     return gl_check("bench_gbuffer create");
 }
 
-static bool read_floats(const fbo *f, int attachment, float *out)
-{
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, f->id);
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)attachment);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, f->width, f->height, GL_RGBA, GL_FLOAT, out);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    return gl_check("bench_gbuffer read");
-}
-
 /* Chapter 07's frame with layout l (chapters/07_face_culling.c, chapter_07_draw_with). */
 static bool draw_frame(sweep_gl *s, int l, const gpu_scene *gs, GLuint target)
 {
@@ -176,7 +167,7 @@ static bool draw_exact(sweep_gl *s, const gpu_scene *gs)
     gpu_scene_draw(gs, s->exact_program);
     gl_pass_state_reset();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return read_floats(&s->exact, 0, s->exact_position) && read_floats(&s->exact, 1, s->exact_normal);
+    return fbo_read_float(&s->exact, 0, s->exact_position) && fbo_read_float(&s->exact, 1, s->exact_normal);
 }
 
 /* What layout l's G-buffer decodes at every pixel: the normal, or the position (SHADER_GBUFFER_VIEW_*). */
@@ -191,7 +182,7 @@ static bool probe(sweep_gl *s, int l, const gpu_scene *gs, int view, float *out)
                 gs->view.far_plane);
     gl_draw_fullscreen();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return read_floats(&s->probe, 0, out);
+    return fbo_read_float(&s->probe, 0, out);
 }
 
 /* ---- error measures ---------------------------------------------------------------------------- */
@@ -289,16 +280,16 @@ static bool measure_picture(sweep_gl *s, int l, bench_renderers *br, const bench
                             layout_row *row)
 {
     image img;
-    if (!bench_renderers_read_target(br, &img) || !read_floats(&s->dv[l].accum, 0, s->hdr)) {
+    if (!bench_renderers_read_target(br, &img) || !fbo_read_float(&s->dv[l].accum, 0, s->hdr)) {
         image_destroy(&img);
         return false;
     }
     compare8(&img, &s->forward_picture, &row->vs_forward8);
-    bench_work_hdr_error(s->hdr, s->forward_hdr, s->width, s->height, &row->vs_forward_hdr);
+    bench_error_measure_hdr(s->hdr, s->forward_hdr, s->width, s->height, &row->vs_forward_hdr);
     row->have_exact = exact;
     if (exact) {
         compare8(&img, &m->ref8, &row->error8);
-        bench_work_hdr_error(s->hdr, m->ref_hdr, s->width, s->height, &row->error_hdr);
+        bench_error_measure_hdr(s->hdr, m->ref_hdr, s->width, s->height, &row->error_hdr);
     }
     if (l == GBUFFER_LAYOUT_REFERENCE) {
         image_destroy(&s->reference_picture);

@@ -1,4 +1,4 @@
-/* scene_tokens.c - the scene parser's messages, growing arrays, name tables and token readers.
+/* scene_parser.c - the scene parser's messages, growing arrays, name tables and token readers.
  *
  * The readers consume the tokens that scene.c cut from the current line; each one checks what the
  * format asks of its token (docs/scene-format.md) and, when the token does not fit, logs the one
