@@ -108,7 +108,6 @@ static void cleanup(app *a)
     forward_destroy(&state.fwd);
 }
 
-/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
 const app_desc chapter_00 = {.cli = &cli, .init = init, .frame = frame, .cleanup = cleanup};
 
 CHAPTER_MAIN(chapter_00)

@@ -115,7 +115,6 @@ static void cleanup(app *a)
     gl_program_destroy(&state.present_program);
 }
 
-/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
 const app_desc chapter_01 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
 
 CHAPTER_MAIN(chapter_01)

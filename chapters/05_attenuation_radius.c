@@ -135,7 +135,6 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
 const app_desc chapter_05 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
 
 CHAPTER_MAIN(chapter_05)

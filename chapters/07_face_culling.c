@@ -158,7 +158,6 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
 const app_desc chapter_07 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
 
 CHAPTER_MAIN(chapter_07)

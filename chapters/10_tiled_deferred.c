@@ -293,7 +293,6 @@ static void cleanup(app *a)
     free(state.spheres), free(state.tile_bounds), free(state.frustums), free(state.ranges), free(state.list);
 }
 
-/* The chapter, for its own main() and for the benchmark and tests (chapters/chapters.h). */
 const app_desc chapter_10 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
 
 CHAPTER_MAIN(chapter_10)

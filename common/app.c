@@ -65,7 +65,8 @@ void app_toggle_compute(bool *compute, const char *what)
 
 bool app_render_forward(app *a)
 {
-    /* counted for --bench only: the overlay shows the chapter's own count, not forward's */
+    /* counted for --bench (and embedded frames) only: with the overlay, counting Forward+ would make
+     * its count target mid-run, which the window's leak check sees as a leak */
     const app_forward_options o = {.count_pixels = a->options->bench, .linear_output = a->linear_output};
     app_forward_work work;
     bool ok = app_forward_draw(&a->forward, a->cli->renderers ? a->cli->renderers[a->renderer] : NULL, &a->gs,

@@ -150,7 +150,7 @@ static bool draw(app_embed *e, const gpu_scene *gs, bool count, bool linear)
     app *a = &e->a;
     if (!follow_scene(e, gs))
         return false;
-    e->opt.bench = count; /* the runner's forward counts for --bench */
+    e->opt.bench = count; /* an embedded frame counts as a --bench frame does (app_render_forward) */
     a->count_pixels = count;
     a->shaded_pixels = -1;
     a->lights_per_pixel = 1.0;
@@ -158,7 +158,6 @@ static bool draw(app_embed *e, const gpu_scene *gs, bool count, bool linear)
     a->linear_written = false;
     a->linear = NULL;
     bool ok = e->desc->frame(a);
-    gl_pass_state_reset();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     a->frame_index++;
     return ok;

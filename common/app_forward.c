@@ -39,7 +39,7 @@ static bool draw_forward_plus(app_forward *f, const gpu_scene *gs, GLuint target
     if (gs->transparent_count > 0 && !need_forward(f)) /* glass goes through forward's linear frame */
         return false;
     clusters_view view = o.linear_output ? CLUSTERS_VIEW_LINEAR : CLUSTERS_VIEW_LIT;
-    if (!clusters_render_forward_plus(&f->c, &f->fwd, gs, target, view) ||
+    if (!clusters_render_forward_plus(&f->c, f->have_fwd ? &f->fwd : NULL, gs, target, view) ||
         (o.count_pixels && !clusters_count(&f->c, NULL, gs)))
         return false;
     out->shaded = o.count_pixels ? f->c.evaluations : -1;

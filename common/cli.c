@@ -28,8 +28,6 @@ static void print_choices(FILE *stream, const char *const *choices)
         fprintf(stream, "%s%s", i ? "|" : "", choices[i]);
 }
 
-const char *const cli_gbuffer_layouts[GBUFFER_LAYOUT_COUNT + 1] = GBUFFER_LAYOUT_NAMES;
-
 /* Words of `text`, from `column` of a line that holds the option's name (padded: at_start, no space
  * before the first word), wrapped before HELP_WIDTH onto lines that start at HELP_COLUMN. */
 #define HELP_COLUMN 27
@@ -389,7 +387,7 @@ static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc
     }
     if (is_option(a, "--gbuffer"))
         return parse_choice(desc, "G-buffer layout", option_value(argc, argv, i, "--gbuffer"),
-                            cli_gbuffer_layouts, &out->gbuffer);
+                            gbuffer_layout_names, &out->gbuffer);
     if (is_option(a, "--compare")) {
         static const char *const modes[] = {"off", "split", "difference", NULL};
         return parse_choice(desc, "compare mode", option_value(argc, argv, i, "--compare"), modes, &out->compare);

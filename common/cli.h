@@ -60,7 +60,7 @@ typedef struct cli_options {
     float time;
     double cutoff;
     const char *falloff;  /* "hard" or "windowed"; NULL: the scene's (directive `falloff`) */
-    const char *gbuffer;  /* one of cli_gbuffer_layouts; NULL: the default (common/gbuffer.h) */
+    const char *gbuffer;  /* one of gbuffer_layout_names (gbuffer_layout_names.h); NULL: the default (common/gbuffer.h) */
     const char *camera;   /* "eye X Y Z target X Y Z ...": replaces those of the scene's camera */
     bool bench;
     bool paused;          /* window: start with the animation stopped at --time */
@@ -74,10 +74,6 @@ typedef struct cli_options {
     const char *compare;  /* "off", "split" or "difference": forward beside the chapter's renderer */
     const char *extra_values[CLI_MAX_EXTRAS];
 } cli_options;
-
-/* --gbuffer's choices, NULL-terminated: gbuffer_layout_names.h's list (GL-free), in the order of
- * common/gbuffer.h's gbuffer_layouts[]. */
-extern const char *const cli_gbuffer_layouts[GBUFFER_LAYOUT_COUNT + 1];
 
 int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out);
 void cli_print_help(const cli_desc *desc, FILE *stream);

@@ -9,42 +9,37 @@
 
 #include <string.h>
 
-/* Each layout's formats and what it loses, by id; GBUFFER_LAYOUT_LIST (gbuffer_layout_names.h) pairs
- * them with the names. What each loses is measured by tests/unit/test_octahedral.c (normals) and the
- * benchmark's G-buffer sweep (positions, pictures); docs/02_mrt_gbuffer.md has the numbers. */
-#define FORMATS_REFERENCE                                                                                    \
-    GL_SRGB8_ALPHA8, GL_RGBA16F, SHADER_GBUFFER_NORMAL_HALF, GBUFFER_DEPTH_D32F,                             \
-        "normal <= 0.040 deg (half floats); S, P half floats"
-#define FORMATS_COMPACT                                                                                      \
-    GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D32F,                             \
-        "normal <= 0.040 deg (2x12 bits); S to 1/255; P integer"
-#define FORMATS_COMPACT_D24S8                                                                                \
-    GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D24S8,                            \
-        "as compact, depth in 24-bit fixed point"
-#define FORMATS_REVERSED_Z                                                                                   \
-    GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D32F_REVERSED,                    \
-        "as compact; relative depth error even over distance"
-#define FORMATS_LINEAR_ALBEDO                                                                                \
-    GL_RGBA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D32F,                                    \
-        "as compact, albedo in linear 1/255 steps (coarse in the dark)"
-#define FORMATS_OCT8                                                                                         \
-    GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_BYTES, GBUFFER_DEPTH_D32F,                              \
-        "as compact, normal <= 0.64 deg (2x8 bits)"
-#define FORMATS_OCT16                                                                                        \
-    GL_SRGB8_ALPHA8, GL_RGBA16, SHADER_GBUFFER_NORMAL_SHORTS, GBUFFER_DEPTH_D32F,                            \
-        "as compact, normal <= 0.0025 deg (2x16 bits)"
-#define LAYOUT(id, name) [GBUFFER_LAYOUT_##id] = {name, FORMATS_##id},
-const gbuffer_layout gbuffer_layouts[GBUFFER_LAYOUT_COUNT] = {GBUFFER_LAYOUT_LIST(LAYOUT)};
-#undef LAYOUT
+/* What each loses is measured by tests/unit/test_octahedral.c (normals) and the benchmark's
+ * G-buffer sweep (positions, pictures); docs/02_mrt_gbuffer.md has the numbers. The names are
+ * gbuffer_layout_names[] (GL-free, for the command line). */
+const gbuffer_layout gbuffer_layouts[GBUFFER_LAYOUT_COUNT] = {
+    [GBUFFER_LAYOUT_REFERENCE] = {GL_SRGB8_ALPHA8, GL_RGBA16F, SHADER_GBUFFER_NORMAL_HALF, GBUFFER_DEPTH_D32F,
+                                  "normal <= 0.040 deg (half floats); S, P half floats"},
+    [GBUFFER_LAYOUT_COMPACT] = {GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D32F,
+                                "normal <= 0.040 deg (2x12 bits); S to 1/255; P integer"},
+    [GBUFFER_LAYOUT_COMPACT_D24S8] = {GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED,
+                                      GBUFFER_DEPTH_D24S8, "as compact, depth in 24-bit fixed point"},
+    [GBUFFER_LAYOUT_REVERSED_Z] = {GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED,
+                                   GBUFFER_DEPTH_D32F_REVERSED,
+                                   "as compact; relative depth error even over distance"},
+    [GBUFFER_LAYOUT_LINEAR_ALBEDO] = {GL_RGBA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_PACKED, GBUFFER_DEPTH_D32F,
+                                      "as compact, albedo in linear 1/255 steps (coarse in the dark)"},
+    [GBUFFER_LAYOUT_OCT8] = {GL_SRGB8_ALPHA8, GL_RGBA8, SHADER_GBUFFER_NORMAL_BYTES, GBUFFER_DEPTH_D32F,
+                             "as compact, normal <= 0.64 deg (2x8 bits)"},
+    [GBUFFER_LAYOUT_OCT16] = {GL_SRGB8_ALPHA8, GL_RGBA16, SHADER_GBUFFER_NORMAL_SHORTS, GBUFFER_DEPTH_D32F,
+                              "as compact, normal <= 0.0025 deg (2x16 bits)"},
+};
 
 static const gbuffer_layout *default_layout = &gbuffer_layouts[GBUFFER_LAYOUT_DEFAULT];
 
 /* ---- layouts ----------------------------------------------------------------------------------- */
 
+const char *gbuffer_layout_name(const gbuffer_layout *layout) { return gbuffer_layout_names[layout - gbuffer_layouts]; }
+
 const gbuffer_layout *gbuffer_layout_find(const char *name)
 {
     for (int i = 0; name && i < GBUFFER_LAYOUT_COUNT; i++)
-        if (strcmp(gbuffer_layouts[i].name, name) == 0)
+        if (strcmp(gbuffer_layout_names[i], name) == 0)
             return &gbuffer_layouts[i];
     return NULL;
 }
@@ -99,7 +94,7 @@ bool gbuffer_layout_available(const gbuffer_layout *layout)
     if (is_reversed(layout) && !have_clip_control()) {
         log_error("G-buffer layout %s needs glClipControl (GL 4.5 or GL_ARB_clip_control), which this "
                   "context (GL %s) lacks",
-                  layout->name, (const char *)glGetString(GL_VERSION));
+                  gbuffer_layout_name(layout), (const char *)glGetString(GL_VERSION));
         return false;
     }
     return true;
@@ -110,7 +105,7 @@ bool gbuffer_set_default_layout(const gbuffer_layout *layout)
     if (!layout || !gbuffer_layout_available(layout))
         return false;
     default_layout = layout;
-    log_debug("G-buffer layout %s: %d bytes per pixel", layout->name, gbuffer_layout_bytes(layout, false));
+    log_debug("G-buffer layout %s: %d bytes per pixel", gbuffer_layout_name(layout), gbuffer_layout_bytes(layout, false));
     return true;
 }
 
@@ -123,7 +118,7 @@ bool gbuffer_layout_fits_pass(const gbuffer_layout *layout, const gl_pass_state 
     log_error("G-buffer layout %s: this chapter's lighting pass reads the G-buffer's depth as standard depth "
               "(near 0, far 1); reversed-Z needs its tests mirrored (common/gbuffer.h); chapters 02 and 03 "
               "take it",
-              layout->name);
+              gbuffer_layout_name(layout));
     return false;
 }
 

@@ -30,6 +30,7 @@
  *                                        (without the stencil's depth copy)
  *
  *   gbuffer_layout_find(name)            the layout called name (--gbuffer), NULL when none is
+ *   gbuffer_layout_name(layout)          its name (gbuffer_layout_names[])
  *   gbuffer_layout_bytes(layout, stencil)
  *                                        bytes per pixel: the bits its formats hold, / 8
  *   gbuffer_layout_depth_format(layout, stencil)
@@ -118,7 +119,6 @@ typedef enum gbuffer_depth {
 /* gbuffer_layouts[] holds one per gbuffer_layout_id (gbuffer_layout_names.h, whose one list of
  * names the command line offers too). */
 typedef struct gbuffer_layout {
-    const char *name;     /* what --gbuffer takes: GBUFFER_LAYOUT_LIST's */
     GLenum albedo_format; /* RT0 */
     GLenum normal_format; /* RT1 */
     int normal_encoding;  /* SHADER_GBUFFER_NORMAL_* */
@@ -156,6 +156,7 @@ int gbuffer_bytes_per_pixel(void);
 double gbuffer_memory_bytes(const gbuffer *g);
 
 const gbuffer_layout *gbuffer_layout_find(const char *name);
+const char *gbuffer_layout_name(const gbuffer_layout *layout);
 int gbuffer_layout_bytes(const gbuffer_layout *layout, bool stencil);
 GLenum gbuffer_layout_depth_format(const gbuffer_layout *layout, bool stencil);
 bool gbuffer_layout_available(const gbuffer_layout *layout);

@@ -31,7 +31,8 @@ if(COURSE_FUZZ)
   set(COURSE_FUZZ_SOURCES_scene ${CMAKE_SOURCE_DIR}/common/scene.c ${CMAKE_SOURCE_DIR}/common/scene_parser.c
     ${CMAKE_SOURCE_DIR}/common/scene_directives.c ${CMAKE_SOURCE_DIR}/common/scene_lights.c
     ${CMAKE_SOURCE_DIR}/common/log.c)
-  set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/cli.c ${CMAKE_SOURCE_DIR}/common/keys.c
+  set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/cli.c ${CMAKE_SOURCE_DIR}/common/gbuffer_layout_names.c
+    ${CMAKE_SOURCE_DIR}/common/keys.c
     ${CMAKE_SOURCE_DIR}/common/log.c)
   foreach(target ${COURSE_FUZZ_TARGETS})
     add_executable(fuzz_${target} ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c

@@ -16,7 +16,7 @@ src=$1 target=$2 seconds=$3 out=$4
 fuzz=$src/tests/fuzz
 case $target in
     scene) sources="$src/common/scene.c $src/common/scene_parser.c $src/common/scene_directives.c $src/common/scene_lights.c $src/common/log.c" ;;
-    cli) sources="$src/common/cli.c $src/common/keys.c $src/common/log.c" ;;
+    cli) sources="$src/common/cli.c $src/common/gbuffer_layout_names.c $src/common/keys.c $src/common/log.c" ;;
     *) echo "unknown fuzz target '$target'" >&2; exit 2 ;;
 esac
 

@@ -1,6 +1,6 @@
 /* test_gbuffer_layouts.c - the G-buffer layouts of common/gbuffer.h hold what they say:
  *
- *   1. names: gbuffer_layouts[] and the command line's cli_gbuffer_layouts[] agree, find works
+ *   1. names: every layout has its name (gbuffer_layout_names[], the command line's), find works
  *   2. bytes: gbuffer_layout_bytes() is the sum of the bits GL reports for the textures it made, with
  *      and without stencil, every internal format is the layout's, and the default is <= 12 bytes
  *   3. reversed-Z: the depth written is 1 - the standard depth (to float rounding), the background
@@ -44,11 +44,11 @@ static void expect(bool ok, const char *what)
 
 static void check_names(void)
 {
-    bool same = cli_gbuffer_layouts[GBUFFER_LAYOUT_COUNT] == NULL;
+    bool same = gbuffer_layout_names[GBUFFER_LAYOUT_COUNT] == NULL;
     for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++)
-        same = same && cli_gbuffer_layouts[l] &&
-               strcmp(cli_gbuffer_layouts[l], gbuffer_layouts[l].name) == 0 &&
-               gbuffer_layout_find(gbuffer_layouts[l].name) == &gbuffer_layouts[l];
+        same = same && gbuffer_layout_names[l] &&
+               strcmp(gbuffer_layout_names[l], gbuffer_layout_name(&gbuffer_layouts[l])) == 0 &&
+               gbuffer_layout_find(gbuffer_layout_names[l]) == &gbuffer_layouts[l];
     expect(same, "--gbuffer's choices are gbuffer_layouts[]'s names, in order, and each is found");
     expect(gbuffer_layout_find("no-such-layout") == NULL && gbuffer_layout_find(NULL) == NULL,
            "an unknown name finds nothing");
@@ -82,13 +82,13 @@ static void check_bytes(void)
             const gbuffer_layout *layout = &gbuffer_layouts[l];
             char what[200];
             if (!gbuffer_layout_available(layout)) {
-                printf("skip %s: not available in this context\n", layout->name);
+                printf("skip %s: not available in this context\n", gbuffer_layout_name(layout));
                 continue;
             }
             gbuffer g;
             bool made =
                 gbuffer_create_with(&g, 32, 16, &(gbuffer_desc){.stencil = stencil, .layout = layout});
-            snprintf(what, sizeof what, "%s%s: created", layout->name, stencil ? " with stencil" : "");
+            snprintf(what, sizeof what, "%s%s: created", gbuffer_layout_name(layout), stencil ? " with stencil" : "");
             expect(made, what);
             if (!made)
                 continue;
@@ -103,7 +103,7 @@ static void check_bytes(void)
             snprintf(what, sizeof what,
                      "%s%s: formats as declared; GL reports %d bits = %d bytes, "
                      "gbuffer_layout_bytes says %d; stencil bits %d",
-                     layout->name, stencil ? " with stencil" : "", bits, bits / 8,
+                     gbuffer_layout_name(layout), stencil ? " with stencil" : "", bits, bits / 8,
                      gbuffer_layout_bytes(layout, stencil), stencil_bits);
             expect(formats && bits % 8 == 0 && bits / 8 == gbuffer_layout_bytes(layout, stencil) &&
                        (!stencil || stencil_bits == 8),
@@ -112,7 +112,7 @@ static void check_bytes(void)
         }
     char what[120];
     snprintf(what, sizeof what, "the default layout (%s) is %d bytes per pixel, at most 12",
-             gbuffer_default_layout()->name, gbuffer_bytes_per_pixel());
+             gbuffer_layout_name(gbuffer_default_layout()), gbuffer_bytes_per_pixel());
     expect(gbuffer_default_layout() == &gbuffer_layouts[GBUFFER_LAYOUT_DEFAULT] &&
                gbuffer_bytes_per_pixel() <= 12,
            what);

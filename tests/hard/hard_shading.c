@@ -66,7 +66,6 @@ static struct {
     gbuffer g;           /* chapter 07's frame with another accumulation format or view */
     deferred_volumes dv;
     fbo target; /* RGBA8 + D32F, like the app's */
-    fbo linear; /* RGBA32F + D32F */
 } state;
 
 /* ---- setup ----------------------------------------------------------------------------------- */
@@ -78,20 +77,15 @@ static bool setup_create(int width, int height)
                              .color_count = 1,
                              .depth_format = GL_DEPTH_COMPONENT32F,
                              .name = "target"};
-    const fbo_desc linear = {.color_formats = {GL_RGBA32F},
-                             .color_count = 1,
-                             .depth_format = GL_DEPTH_COMPONENT32F,
-                             .name = "linear"};
     memset(&state.chapters, 0, sizeof state.chapters);
     bool ok = fbo_create(&state.target, &target, width, height) &&
-              fbo_create(&state.linear, &linear, width, height) && gbuffer_create(&state.g, width, height) &&
+              gbuffer_create(&state.g, width, height) &&
               deferred_volumes_create(&state.dv, &state.g, GL_RGBA16F);
     return hard_expect(ok, "renderers created at %dx%d", width, height);
 }
 
 static void setup_destroy(void)
 {
-    fbo_destroy(&state.linear);
     fbo_destroy(&state.target);
     deferred_volumes_destroy(&state.dv);
     gbuffer_destroy(&state.g);

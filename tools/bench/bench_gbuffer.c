@@ -415,7 +415,7 @@ static bool run_scene(const bench_options *o, int si, bench_renderers *br, bench
             R.rows[si][l].lights = sc.light_count;
             if (ok && R.rows[si][l].measured)
                 fprintf(stderr, "bench: gbuffer %-8s %-14s %2d bytes %9.2f ms, normal max %.4f deg\n",
-                        bench_gbuffer_scene_names[si], gbuffer_layouts[l].name,
+                        bench_gbuffer_scene_names[si], gbuffer_layout_names[l],
                         gbuffer_layout_bytes(&gbuffer_layouts[l], false), R.rows[si][l].frame_ms,
                         R.rows[si][l].normal_max);
         }

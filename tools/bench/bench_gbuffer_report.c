@@ -67,7 +67,7 @@ bool bench_gbuffer_write_csv(const bench_state *st)
             const layout_row *r = &R.rows[si][l];
             const gbuffer_layout *g = &gbuffer_layouts[l];
             bool m = r->measured;
-            fprintf(f, "%s,%d,%s,%s,%d,%d,%s,%s,%s,%s,%d,%d,%d", bench_gbuffer_scene_names[si], r->lights, g->name,
+            fprintf(f, "%s,%d,%s,%s,%d,%d,%s,%s,%s,%s,%d,%d,%d", bench_gbuffer_scene_names[si], r->lights, gbuffer_layout_name(g),
                     g == gbuffer_default_layout() ? "yes" : "no", gbuffer_layout_bytes(g, false),
                     gbuffer_layout_bytes(g, true), format_name(g->albedo_format),
                     format_name(g->normal_format), normal_name(g->normal_encoding), depth_name(g),
@@ -109,7 +109,7 @@ static void write_layout_table(FILE *f)
                "|---|---|---|---|---|---|---|\n");
     for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
         const gbuffer_layout *g = &gbuffer_layouts[l];
-        fprintf(f, "| %s%s | %s | %s, %s | %s | %d | %d | %s |\n", g->name,
+        fprintf(f, "| %s%s | %s | %s, %s | %s | %d | %d | %s |\n", gbuffer_layout_name(g),
                 g == gbuffer_default_layout() ? " (default)" : "", format_name(g->albedo_format),
                 format_name(g->normal_format), normal_name(g->normal_encoding), depth_name(g),
                 gbuffer_layout_bytes(g, false), gbuffer_layout_bytes(g, true), g->loses);
@@ -145,12 +145,12 @@ void bench_gbuffer_write_md(FILE *f, const bench_state *st)
         for (int l = 0; R.scene_done[si] && l < GBUFFER_LAYOUT_COUNT; l++) {
             const layout_row *r = &R.rows[si][l];
             if (!r->measured) {
-                fprintf(f, "| %s | %s | – | %s | | | | | | | | |\n", bench_gbuffer_scene_names[si], gbuffer_layouts[l].name,
+                fprintf(f, "| %s | %s | – | %s | | | | | | | | |\n", bench_gbuffer_scene_names[si], gbuffer_layout_names[l],
                         r->note);
                 continue;
             }
             fprintf(f, "| %s | %s | %d | %.1f | %.1f | %.1f | %.4f | %.4f |", bench_gbuffer_scene_names[si],
-                    gbuffer_layouts[l].name, gbuffer_layout_bytes(&gbuffer_layouts[l], false), r->frame_ms,
+                    gbuffer_layout_names[l], gbuffer_layout_bytes(&gbuffer_layouts[l], false), r->frame_ms,
                     r->geometry_ms, r->lighting_ms, r->normal_max, r->normal_mean);
             for (int b = 0; b < 3; b++)
                 fprintf(f, " %.2g / %.2g (%.3g) |", r->bands[b].mean, r->bands[b].max, r->bands[b].distance);
@@ -164,7 +164,7 @@ void bench_gbuffer_write_md(FILE *f, const bench_state *st)
             const layout_row *r = &R.rows[si][l];
             if (!r->measured)
                 continue;
-            fprintf(f, "| %s | %s | %d, %ld | %.4f | %.3g | %.3g |", bench_gbuffer_scene_names[si], gbuffer_layouts[l].name,
+            fprintf(f, "| %s | %s | %d, %ld | %.4f | %.3g | %.3g |", bench_gbuffer_scene_names[si], gbuffer_layout_names[l],
                     r->vs_forward8.max_abs, r->vs_forward8.over, r->vs_forward8.mean_abs,
                     r->vs_forward_hdr.max_abs, r->vs_forward_hdr.mean_abs);
             if (r->have_exact)

@@ -294,7 +294,7 @@ static void write_intro(FILE *f, const bench_state *st)
             o->error_max_lights);
     fprintf(f,
             "- G-buffer: %d bytes per pixel, layout %s (naive layout with world position: %d)%s\n\n",
-            bench_renderer_gbuffer_bytes(), gbuffer_default_layout()->name,
+            bench_renderer_gbuffer_bytes(), gbuffer_layout_name(gbuffer_default_layout()),
             bench_renderer_gbuffer_naive_bytes(),
             bench_gbuffer_enabled() ? "; the other layouts: \"G-buffer layouts\" below" : "");
 }
