@@ -10,11 +10,11 @@
  *      the depth test is GL_EQUAL with writes off, so only the visible fragment of each pixel
  *      pays for its lights.
  * The passes themselves (forward_build_light_lists, forward_draw_depth, forward_draw_shaded) are
- * in common/forward.c, because later chapters switch back to this renderer to compare. A scene with
+ * in common/render/forward.c, because later chapters switch back to this renderer to compare. A scene with
  * glass (material opacity < 1) is drawn through a float buffer, the glass last, sorted and blended
  * in linear radiance (chapter 12 explains why; docs/12_transparency.md).
  *
- * The renderers of this chapter turn the two optimisations on and off (common/renderers.c):
+ * The renderers of this chapter turn the two optimisations on and off (forward_variants in common/render/forward.c):
  *   forward           depth pre-pass + per-object light lists (the default, the best forward)
  *   forward-naive     one pass, every object shaded with every light
  *   forward-prepass   depth pre-pass only: each visible pixel is shaded once

@@ -5,7 +5,7 @@
  * texture) and a depth renderbuffer (only the depth test reads it, so no texture needed). The
  * scene is chapter 00's forward renderer drawn into it; a full-screen triangle then copies the
  * colour texture into the window. The picture must be chapter 00's, pixel for pixel (key R
- * switches to drawing it directly). common/fbo.c generalises this for later chapters: several
+ * switches to drawing it directly). common/gl/fbo.c generalises this for later chapters: several
  * colour textures and a depth TEXTURE, because from chapter 02 on a later pass reads the depth.
  * Read docs/01_fbo_setup.md alongside.
  */

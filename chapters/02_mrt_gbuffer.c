@@ -1,7 +1,7 @@
 /* 02_mrt_gbuffer.c - the geometry pass: one draw per object writes a G-buffer, several render
  * targets at once (multiple render targets, `layout(location = N) out` in shaders/gbuffer.frag).
  *
- * What goes in is only what the shading model reads later (common/gbuffer.h has the layout):
+ * What goes in is only what the shading model reads later (common/render/gbuffer.h has the layout):
  * albedo in sRGB8, an octahedral normal in two half floats beside specular and shininess, and
  * depth, from which the lighting pass rebuilds the position. Each target can be looked at
  * (--view or key V): the pictures every deferred tutorial shows. `final` lights the G-buffer

@@ -1,14 +1,14 @@
 /* 03_fullscreen_phong.c - deferred shading, complete: a geometry pass fills the G-buffer, then one
  * full-screen triangle lights every pixel with every light.
  *
- * Compare with 00_forward (key R): the picture is the same to 1/255 (tests/chapters_01_03.cmake),
+ * Compare with 00_forward (key R): the picture is the same to 1/255 (tests/chapters/chapters_01_03.cmake),
  * but each pixel is now shaded exactly once, whatever the depth complexity, and the objects are
  * drawn once, whatever the number of lights.
  *
- * Taken over: the G-buffer pass (common/gbuffer.c, chapter 02). New here: the lighting pass,
+ * Taken over: the G-buffer pass (common/render/gbuffer.c, chapter 02). New here: the lighting pass,
  * shaders/deferred_fullscreen.frag. It reads the surface back (shaders/gbuffer_read.glsl),
  * rebuilds the world position from depth with the inverse view-projection, and calls the same
- * shade_light() as forward.frag, once per light. The pass lives in common/deferred_fullscreen.c
+ * shade_light() as forward.frag, once per light. The pass lives in common/render/deferred_fullscreen.c
  * because chapter 02's lit view and the benchmark draw it too.
  *
  * The cost of this pass is pixels x lights, and most of it is wasted: with a cut-off a light only

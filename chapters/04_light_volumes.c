@@ -2,7 +2,7 @@
  * covers run the lighting shader for that light. Compare with chapter 03, where every pixel
  * looped over every light.
  *
- * Taken over: the G-buffer pass (common/gbuffer.c, written in chapter 02). New here, in this file:
+ * Taken over: the G-buffer pass (common/render/gbuffer.c, written in chapter 02). New here, in this file:
  *   - the volume is an 80-triangle icosphere. Its vertices lie on the unit sphere, so its flat
  *     faces cut inside it; scaled by 1 / inradius the mesh contains the whole sphere (--scale none
  *     draws it unscaled: the light ends in a polygon instead of a circle);
@@ -20,7 +20,7 @@
  *     (the hard circles), others shade pixels they cannot reach. Chapter 05 solves each radius.
  *   - blending is off: a volume fragment REPLACES the pixel, so where two spheres overlap only the
  *     light drawn last survives (the straight seams between two lights). Chapter 06 adds them up.
- * V shows the debug views (common/debug_views.c): overdraw, the volumes' fragments per pixel as a
+ * V shows the debug views (common/render/debug_views.c): overdraw, the volumes' fragments per pixel as a
  * heat map, drawn with this pass's faces but counted by additive blending; volumes, the spheres as
  * lines. Read docs/04_light_volumes.md alongside.
  */

@@ -2,11 +2,11 @@
  * attenuated brightness falls to the cut-off. Compare with chapter 04 (one fixed radius for all).
  *
  * Taken over: the G-buffer pass (02), the volume mesh, programs and instanced draw (04, now
- * common/light_volumes.c). New here:
+ * common/render/light_volumes.c). New here:
  *   - the radius. A point light's brightness at distance d is peak / (kc + kl d + kq d^2), peak its
  *     brightest colour channel times its intensity. Past the distance where that drops below the
  *     cut-off (default 5/256, about the smallest step an 8-bit display shows) the light is treated
- *     as zero, so the volume can stop there. light_radius() (common/light.c) solves
+ *     as zero, so the volume can stop there. light_radius() (common/scene/light.c) solves
  *     kq r^2 + kl r + kc - peak / cutoff = 0 with the cancellation-free root
  *     2c / (kl + sqrt(kl^2 + 4 kq c)), c = peak / cutoff - kc; gpu_scene_update() calls it for
  *     every light (the forward renderer cuts its lights off at the same radius) and uploads it
@@ -22,7 +22,7 @@
  *
  * Still wrong on purpose: no blending, so where two volumes overlap the light drawn last wins,
  * now along the true radii. Chapter 06 adds the lights up. V also shows the debug views of
- * common/debug_views.c: overdraw (fragments per pixel, a heat map) and volumes (the spheres as
+ * common/render/debug_views.c: overdraw (fragments per pixel, a heat map) and volumes (the spheres as
  * lines, at the solved radii). Read docs/05_attenuation_radius.md.
  */
 #include "app.h"

@@ -3,7 +3,7 @@
  * others wherever two volumes overlapped.
  *
  * Taken over: the G-buffer pass (02), the volumes from 04, each light's radius from 05 (all in
- * common/light_volumes.c). New here (common/deferred_volumes.c from this chapter on):
+ * common/render/light_volumes.c). New here (common/render/deferred_volumes.c from this chapter on):
  *   - light adds up: the radiance at a pixel is ambient + the sum of every light's shade_light().
  *     Each volume fragment adds its light with glBlendFunc(GL_ONE, GL_ONE) (the pass state below)
  *     into an accumulation buffer, after one full-screen pass has written the ambient term;
@@ -23,7 +23,7 @@
  *   none      clamp to [0, 1]: the forward renderer's transform (the default, checked against it)
  *   exposure  multiply by --exposure first (darker or brighter), then clamp
  *   reinhard  x / (1 + x) after the exposure: bright overlaps roll off instead of clipping
- * V shows the debug views (common/debug_views.c): overdraw counts the fragments in the same buffer
+ * V shows the debug views (common/render/debug_views.c): overdraw counts the fragments in the same buffer
  * (an rgba8 one stops counting at 16) and shows them as a heat map; volumes draws the spheres as
  * lines. Read docs/06_additive_blending.md alongside.
  */

@@ -3,7 +3,7 @@
  * pixel a sphere covers on screen, in front of it or behind it.
  *
  * Taken over: the G-buffer pass (02), the volumes from 04, the radius from 05, the additive
- * blending into a float buffer and the present pass from 06 (common/deferred_volumes.c). New here:
+ * blending into a float buffer and the present pass from 06 (common/render/deferred_volumes.c). New here:
  * the volume pass's depth state, one literal (volume_pass below).
  *
  * A sphere's pixels come in two layers: its front faces (nearer half) and its back faces. Which
@@ -21,7 +21,7 @@
  *   --depth-clamp off   the far plane clips back faces: lights vanish near the far plane
  * --view overdraw shows how many lighting fragments ran at each pixel as a heat map; --bench prints
  * their total as shaded_pixels. --view volumes draws the spheres as lines over the picture
- * (common/debug_views.c). Read docs/07_face_culling.md alongside.
+ * (common/render/debug_views.c). Read docs/07_face_culling.md alongside.
  */
 #include "app.h"
 #include "chapters.h"

@@ -6,7 +6,7 @@
  *
  * Taken over: the G-buffer pass (02), now with a depth-stencil target (gbuffer_create_with; the
  * shaders read a copy of its depth, since the passes below write its stencil); the volumes from 04
- * and 05; the accumulation buffer and the present pass from 06 (common/deferred_volumes.c); back
+ * and 05; the accumulation buffer and the present pass from 06 (common/render/deferred_volumes.c); back
  * faces and depth clamp from 07. New here, per batch of lights:
  *   a. stencil_pass: both faces, colour writes off, depth test GL_LEQUAL against the scene's depth,
  *      depth writes off. Where a face lies BEHIND the visible surface (the test fails) a back face
@@ -20,7 +20,7 @@
  *      next batch starts from a clean stencil without a clear.
  * Batches: two lights whose rectangles on screen do not overlap touch different pixels, so their
  * counts cannot mix, and one instanced draw per pass serves all the lights of a batch
- * (common/light_batches.c). Lights whose sphere holds the whole view are drawn as in 07: full-screen.
+ * (common/render/light_batches.c). Lights whose sphere holds the whole view are drawn as in 07: full-screen.
  * The options show why each choice is made:
  *   --batch off          one light per batch: two draws per light instead of two per batch
  *   --count depth-pass   count the faces IN FRONT of the surface instead: right from outside,

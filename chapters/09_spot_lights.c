@@ -4,12 +4,12 @@
  * picture, and more lighting fragments.
  *
  * Taken over: the G-buffer pass (02), the volumes from 04 and 05, the accumulation buffer and the
- * present pass from 06 (common/deferred_volumes.c), chapter 07's pass state: back faces, GL_GREATER,
+ * present pass from 06 (common/render/deferred_volumes.c), chapter 07's pass state: back faces, GL_GREATER,
  * depth clamp. New here:
  *   the spot itself: shade_light() multiplies a light by smoothstep(cos(outer), cos(inner), dot(-l, D))
  *     (shaders/shading.glsl). A point light is a spot without a cone (cos(outer) = -1), so every
  *     renderer, forward included, shades both with one code path;
- *   the cone volume (common/light_volumes.c, placed by shaders/cone_volume.glsl): an apex at the light,
+ *   the cone volume (common/render/light_volumes.c, placed by shaders/cone_volume.glsl): an apex at the light,
  *     a 12-sided pyramid whose faces touch the cone, a cap of 3 rings outside the sphere. Like the
  *     icosphere scaled by 1 / inradius it CONTAINS the shape it stands for (--scale none: it does not);
  *   the light list split in two (split_spots): the point lights' spheres in one instanced draw, the
@@ -63,7 +63,7 @@ static const gl_pass_state volume_pass = {
 /* Lights whose sphere holds the whole view: a full-screen triangle, no culling, no depth test. */
 static const gl_pass_state fullscreen_pass = {.blend = {GL_ONE, GL_ONE}};
 
-/* The volumes view's lines: both faces, hidden behind the scene, as common/debug_views.c draws them. */
+/* The volumes view's lines: both faces, hidden behind the scene, as common/render/debug_views.c draws them. */
 static const gl_pass_state line_pass = {.depth_func = GL_LESS};
 
 static struct {

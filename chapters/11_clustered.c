@@ -7,7 +7,7 @@
  * slice.
  *
  * Taken over: the G-buffer pass (02), shade_light() with its spots (00, 09), the depth pre-pass and
- * GL_EQUAL from chapter 00, the heat map (03). New here (common/cluster_grid.c, common/clusters.c,
+ * GL_EQUAL from chapter 00, the heat map (03). New here (common/clusters/cluster_grid.c, common/clusters/clusters.c,
  * shaders/clusters.glsl):
  *   the grid: 32 x 32-pixel tiles times S slices; slice k holds view depths
  *     near * (far / near)^(k / S) .. near * (far / near)^((k + 1) / S), S chosen so that a cluster is
@@ -15,7 +15,7 @@
  *   2. light assignment: each light's bounding sphere (a spot's: the sphere around its cone) in view
  *      space, into every cluster whose box it reaches; per cluster (first, count) and the light
  *      indices, in two texture buffers. --assign cpu (GL 3.3): made on the CPU and uploaded;
- *      --assign compute (GL 4.3, common/cluster_assign_gpu.c): the CPU finds each light's slices
+ *      --assign compute (GL 4.3, common/clusters/cluster_assign_gpu.c): the CPU finds each light's slices
  *      and tiles, compute passes test the clusters and write the lists, the same bit for bit
  *      (--assign check compares them every frame); the L key switches
  *   3. shading: the fragment finds its cluster from gl_FragCoord and its view depth, and loops over
@@ -123,7 +123,7 @@ static bool frame_deferred(app *a)
 }
 
 /* Forward+: 1. depth pre-pass; 2. light assignment; 3. every object shaded once, GL_EQUAL. Written
- * in common/clusters.c (clusters_render_forward_plus), since every chapter offers Forward+. */
+ * in common/clusters/clusters.c (clusters_render_forward_plus), since every chapter offers Forward+. */
 static bool frame_forward_plus(app *a)
 {
     return clusters_render_forward_plus(&state.c, NULL, &a->gs, a->target.id, view_of(a)) &&

@@ -1,7 +1,7 @@
-/* chapters.h - every chapter's descriptor (common/app.h): each chapters/NN_name.c defines its
+/* chapters.h - every chapter's descriptor (common/app/app.h): each chapters/NN_name.c defines its
  * chapter_NN and ends with CHAPTER_MAIN(chapter_NN). The build compiles each chapter twice: as its
  * own program, and without its main() into the library the benchmark and the tests link, which run
- * the chapters in-process through common/app_embed.h. The renderers the benchmark compares are
+ * the chapters in-process through common/app/app_embed.h. The renderers the benchmark compares are
  * chapters with arguments: chapters/course_renderers.h.
  */
 #ifndef CHAPTERS_CHAPTERS_H

@@ -14,7 +14,7 @@ if [ "${COURSE_TEST_ASAN:-1}" != 0 ]; then
   asan=$root/build-asan
   cmake -S "$root" -B "$asan" -DCMAKE_BUILD_TYPE=Debug -DCOURSE_WERROR=ON -DCOURSE_SANITIZE=ON >/dev/null
   cmake --build "$asan" -j"$(nproc)"
-  LSAN_OPTIONS="suppressions=$root/tests/lsan.supp" \
+  LSAN_OPTIONS="suppressions=$root/tests/robust/lsan.supp" \
     ctest --test-dir "$asan" --output-on-failure -j"$(nproc)" -L 'unit|sanitize' || status=$?
 fi
 exit "$status"

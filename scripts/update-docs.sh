@@ -13,7 +13,7 @@
 #   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots
 # Each file starts with the same stamp (date, CPU, cores, GL renderer, commit, clock). The pages
 # embed sections of these files verbatim between <!-- generated: FILE#SECTION --> markers, and
-# tests/doc_generated.py fails when a page's copy differs from the file (--update refreshes them).
+# tests/lessons/doc_generated.py fails when a page's copy differs from the file (--update refreshes them).
 # Takes about 20 minutes on 2 cores with llvmpipe; --quick (a few minutes) is for trying the script.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -158,5 +158,5 @@ build/bin/bench --out "$data/bench" "${bench_args[@]}"
 { printf '%s\n\n' "$stamp"; cat "$data/bench/bench.md"; echo; scripts/forward-plus-table.sh "$data/bench/bench.csv"; } \
   >"$data/bench/bench.md.tmp"
 mv "$data/bench/bench.md.tmp" "$data/bench/bench.md"
-/usr/bin/python3 tests/doc_generated.py --update "$root"
+/usr/bin/python3 tests/lessons/doc_generated.py --update "$root"
 echo "the pages now show this run; review with: git diff docs"

@@ -1,7 +1,7 @@
 #version 430 core
 // cluster_assign.comp - chapter 11's light assignment on the GPU (OpenGL 4.3): the lists that
-// cluster_lists_assign (common/cluster_grid.c) makes on the CPU, bit for bit, in three passes built
-// from this file by a define (common/cluster_assign_gpu.c). The CPU has sorted each light's tiles
+// cluster_lists_assign (common/clusters/cluster_grid.c) makes on the CPU, bit for bit, in three passes built
+// from this file by a define (common/clusters/cluster_assign_gpu.c). The CPU has sorted each light's tiles
 // per slice into one candidate list per (slice, tile row), in light order: rows[b] .. rows[b + 1] - 1
 // for b = slice * tile rows + row, each (light, first | last tile column << 16).
 //   PASS_COUNT  one invocation per (slice, tile row) walks its candidates and, for each, the
@@ -43,7 +43,7 @@ uniform ivec3 u_grid; // tiles in x, tiles in y, slices
 uniform int u_limit;  // most entries a list holds
 
 // The distance from the sphere's centre to the box, squared, against the radius squared: as
-// common/cluster_grid.c's box_touches adds it up, axis by axis.
+// common/clusters/cluster_grid.c's box_touches adds it up, axis by axis.
 bool sphere_touches(vec4 s, vec2 bx, vec2 by, vec2 bz)
 {
     if (s.w >= CLUSTER_INFINITE_RADIUS)

@@ -2,14 +2,14 @@
 // (clustered_deferred.frag) and Forward+ (forward_plus.frag). Include after shading.glsl.
 // A cluster is a screen tile (u_cluster_tile pixels square) times a view-depth slice; slice k holds
 // view depths near * (far / near)^(k / S) .. near * (far / near)^((k + 1) / S), S = u_cluster_grid.z
-// (docs/11_clustered.md has the figure). The lists are made on the CPU (common/cluster_grid.c, whose
+// (docs/11_clustered.md has the figure). The lists are made on the CPU (common/clusters/cluster_grid.c, whose
 // cluster_grid_index is this file's cluster_index): per cluster (first, count) in u_cluster_ranges,
 // count -1 when the cluster's list overflowed (then every light); the light indices in
 // u_cluster_lights, in light order.
 #ifndef CLUSTERS_GLSL
 #define CLUSTERS_GLSL
 
-// The two views beside SHADER_VIEW_LIT and SHADER_VIEW_OVERDRAW (common/clusters.c has the same).
+// The two views beside SHADER_VIEW_LIT and SHADER_VIEW_OVERDRAW (common/clusters/clusters.c has the same).
 #define VIEW_CLUSTERS 3
 #define VIEW_COUNT 4
 

@@ -1,7 +1,7 @@
-// cone_volume.glsl - where chapter 09's cone mesh (common/light_volumes.h, light_volumes_cone_*) puts
+// cone_volume.glsl - where chapter 09's cone mesh (common/render/light_volumes.h, light_volumes_cone_*) puts
 // a vertex for a spot, so that the mesh CONTAINS the spot's cone cut by its sphere of influence
 // (docs/09_spot_lights.md). Include after "shading.glsl". light_volumes_cone_point() in
-// common/light_volumes.c is the same computation in C: tests/spot/test_cone_mesh.c checks it.
+// common/render/light_volumes.c is the same computation in C: tests/spot/test_cone_mesh.c checks it.
 //
 // The template's vertices are not positions: the apex is (0, 0, -1); a cap vertex is
 // (cos a, sin a, t), azimuth a, t from 0 at the tip to 1 at the rim. A cap vertex goes to polar

@@ -1,6 +1,6 @@
 #version 330 core
 // forward.frag - shades a surface point with every light (or the object's light list).
-// With TRANSPARENT (chapter 12's glass, common/forward.c): the output is linear radiance with the
+// With TRANSPARENT (chapter 12's glass, common/render/forward.c): the output is linear radiance with the
 // material's opacity A in alpha, for blending A * shaded + (1 - A) * behind over linear radiance;
 // a back face (an object's far side, seen through its near side) is shaded as the side facing the eye.
 #include "shading.glsl"
@@ -14,7 +14,7 @@ flat in float v_shininess;
 
 uniform vec3 u_eye;
 
-// Per-object light lists (common/forward.c): entries 2*o and 2*o+1 hold object o's first index
+// Per-object light lists (common/render/forward.c): entries 2*o and 2*o+1 hold object o's first index
 // and count; the light indices follow.
 uniform bool u_use_list;
 uniform isamplerBuffer u_light_list;

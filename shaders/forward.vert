@@ -5,7 +5,7 @@
 // makes that a promise rather than luck).
 //
 // Objects are drawn instanced, a batch of objects sharing a mesh per draw call; each instance
-// reads its world matrix and material from u_objects (common/gpu_scene.h lists the texels).
+// reads its world matrix and material from u_objects (common/gl/gpu_scene.h lists the texels).
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -25,7 +25,7 @@ invariant gl_Position;
 void main()
 {
     int object = u_first_object + gl_InstanceID;
-    int t = SHADER_OBJECT_TEXELS * object; // layout: common/shader_layout.h
+    int t = SHADER_OBJECT_TEXELS * object; // layout: common/base/shader_layout.h
     mat4 model = mat4(texelFetch(u_objects, t), texelFetch(u_objects, t + 1), texelFetch(u_objects, t + 2),
                       texelFetch(u_objects, t + 3));
     int n = t + SHADER_OBJECT_TEXEL_NORMAL;

@@ -1,7 +1,7 @@
 #version 330 core
 // gbuffer.frag - the geometry pass: no lighting, only what the lighting pass will need,
 // written to two render targets at once (vertex shader: forward.vert, so depth is bit-identical).
-// GBUFFER_NORMAL (a SHADER_GBUFFER_NORMAL_* value, set by common/gbuffer.c from the layout) says how
+// GBUFFER_NORMAL (a SHADER_GBUFFER_NORMAL_* value, set by common/render/gbuffer.c from the layout) says how
 // RT1 holds the normal; shaders/gbuffer_read.glsl undoes each. GBUFFER_EXACT: the benchmark's
 // reference instead, the float position and normal into two float targets.
 #include "shading.glsl"

@@ -1,4 +1,4 @@
-// gbuffer_read.glsl - decodes one G-buffer pixel, whatever its layout (common/gbuffer.h).
+// gbuffer_read.glsl - decodes one G-buffer pixel, whatever its layout (common/render/gbuffer.h).
 // The uniforms are set by gbuffer_bind_textures(); include after "shading.glsl" or alone.
 #ifndef GBUFFER_READ_GLSL
 #define GBUFFER_READ_GLSL

@@ -2,7 +2,7 @@
 // docs/09_spot_lights.md the spot's cone). Included by forward.frag and every deferred lighting
 // shader, never copied.
 
-uniform samplerBuffer u_lights; // SHADER_LIGHT_TEXELS RGBA32F texels per light (common/shader_layout.h)
+uniform samplerBuffer u_lights; // SHADER_LIGHT_TEXELS RGBA32F texels per light (common/base/shader_layout.h)
 uniform int u_light_count;
 uniform vec3 u_ambient;
 uniform int u_falloff; // SHADER_FALLOFF_HARD or SHADER_FALLOFF_WINDOWED

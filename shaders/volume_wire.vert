@@ -1,5 +1,5 @@
 #version 330 core
-// volume_wire.vert - the volumes view (common/debug_views.c): instance i is light i's volume mesh,
+// volume_wire.vert - the volumes view (common/render/debug_views.c): instance i is light i's volume mesh,
 // placed and scaled as light_volume.vert places it (the light's solved radius, or chapter 04's fixed
 // one, times the mesh scale), drawn as lines. A light with an infinite radius has no sphere to show:
 // its vertices go outside the clip volume, so nothing of it is drawn.

@@ -5,7 +5,7 @@
  * The scenes rebuild, in spirit, the test scenes of published deferred-shading
  * results (a city of cubes, a field of bunnies, one dense sphere, a table of
  * teapots), so the course's timings can be set beside them. Everything is drawn
- * from common/rng.h with a fixed seed per scene: the files are reproducible
+ * from common/base/rng.h with a fixed seed per scene: the files are reproducible
  * byte for byte, and regenerating one scene never shifts another.
  *
  * This file is the command line only. The work is in tools/gen_scenes/ (not in tools/
@@ -13,7 +13,7 @@
  *   recipes.c     the four scenes, and writing them with the teapot model
  *   gen_scene.c   the in-memory scene and the .scene writer
  *   teapot.c      Bezier patch tessellation, welding, the OBJ writer
- *   gen_color.c   random colours (drawn from common/rng.c, the course's one generator)
+ *   gen_color.c   random colours (drawn from common/base/rng.c, the course's one generator)
  *   gen_format.c  number formatting;  gen_path.c  folders and output files
  *
  * The bunny model is not generated here (tools/bunny_to_ply.mjs converts it); its

@@ -1,5 +1,6 @@
 /* heat_count.c - read an overdraw screenshot back into counts, so a test can check what the heat
- * map claims (tests/overdraw.cmake): its total against the lighting pass's GL_SAMPLES_PASSED.
+ * map claims (tests/golden/run_overdraw_count.sh): its total against the lighting pass's
+ * GL_SAMPLES_PASSED.
  *
  *   heat_count [--expect-sum N] [--expect-each N] [--expect-covered N] IMAGE.png
  *   heat_count --legend OUT.png

@@ -1,5 +1,5 @@
 /* fuzz_util.h - what the fuzz targets share. Header-only, since each target is built on its own
- * (tests/fuzz.cmake, run_fuzz.sh) from its one fuzz_NAME.c.
+ * (tests/fuzz/fuzz.cmake, run_fuzz.sh) from its one fuzz_NAME.c.
  *
  *   fuzz_text(data, size)   a malloc'd copy of the input bytes with a NUL after them, for parsers
  *                           that take a C string; NULL when out of memory. The caller frees it.

@@ -1,4 +1,4 @@
-/* test_gbuffer_layouts.c - the G-buffer layouts of common/gbuffer.h hold what they say:
+/* test_gbuffer_layouts.c - the G-buffer layouts of common/render/gbuffer.h hold what they say:
  *
  *   1. names: every layout has its name (gbuffer_layout_names[], the command line's), find works
  *   2. bytes: gbuffer_layout_bytes() is the sum of the bits GL reports for the textures it made, with

@@ -3,7 +3,7 @@
  *
  * Resources: the app's target (RGBA8 + depth, as app.c makes it), the G-buffer, and the light
  * volumes' accumulation buffer, which shares the G-buffer's depth. The window's own resize path is
- * tested by the chapters' --resize-cycle option (tests/robust.cmake).
+ * tested by the chapters' --resize-cycle option (tests/robust/robust.cmake).
  *
  * Exit 0 when every check holds, 1 when one fails, 77 when no GL context can be made.
  */

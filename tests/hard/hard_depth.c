@@ -5,7 +5,7 @@
  * float) and exactly (the closed form in double, from the same stored depth). The table shows the
  * largest relative and absolute error over the plane's pixels. Formats:
  *   d24        24-bit fixed point, standard depth (-1..1 clip z, clear 1, GL_LESS)
- *   d32f       32-bit float, standard depth (what common/gbuffer.c uses)
+ *   d32f       32-bit float, standard depth (what common/render/gbuffer.c uses)
  *   d32f-rev   32-bit float, reversed-Z: glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), near -> 1,
  *              far -> 0, clear 0, GL_GREATER (only where the context has clip control)
  * Bounds asserted (why in docs/hard-cases.md, case 5):

@@ -13,9 +13,9 @@
  *   hard_shading culled      (1)  a light that never reaches the cut-off is dropped; a light that
  *                                 never falls to it is drawn full-screen
  *
- * Three renderers draw the same gpu_scene: "forward" (chapter 00's best, common/forward.c),
- * "fullscreen" (chapter 03, common/deferred_fullscreen.c) and "volumes" (chapter 07's light
- * volumes, common/light_volumes.c). Every run has KHR_debug on; a GL error fails it.
+ * Three renderers draw the same gpu_scene: "forward" (chapter 00's best, common/render/forward.c),
+ * "fullscreen" (chapter 03, common/render/deferred_fullscreen.c) and "volumes" (chapter 07's light
+ * volumes, common/render/light_volumes.c). Every run has KHR_debug on; a GL error fails it.
  */
 #include "hard_util.h"
 

@@ -1,6 +1,6 @@
 /* test_cone_mesh.c - chapter 09's cone volume must contain the spot's cone cut by its sphere.
  *
- * The lighting pass draws each spot as the template of common/light_volumes.c, placed by
+ * The lighting pass draws each spot as the template of common/render/light_volumes.c, placed by
  * shaders/cone_volume.glsl (light_volumes_cone_point here, the same formula in double): an apex at the
  * light, a pyramid of 12 faces around the axis, a cap of 3 rings. A face that cuts into the true shape
  * (the cone of the outer angle, cut by the sphere of the light's radius) would lose light along it, as

@@ -1,6 +1,6 @@
 /* test_light_rect.c - chapter 08's batches are only right if each light's rectangle holds every
  * pixel its volume can touch: two lights of one batch must never share a pixel, or their stencil
- * counts mix and a light goes missing (common/light_batches.c, light_batches_rect).
+ * counts mix and a light goes missing (common/render/light_batches.c, light_batches_rect).
  *
  * For random cameras (eye, target, field of view, near plane, size) and random spheres, points
  * sampled over the sphere are projected with the camera's matrices in double; every point in front

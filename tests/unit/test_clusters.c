@@ -1,5 +1,5 @@
-/* test_clusters.c - chapter 11's clusters without GL (common/cluster_grid.c and cluster_lists.c,
- * compiled in by tests/chapter_11.cmake and tests/CMakeLists.txt): the slice of a depth, and the
+/* test_clusters.c - chapter 11's clusters without GL (common/clusters/cluster_grid.c and cluster_lists.c,
+ * compiled in by tests/chapters/chapter_11.cmake and tests/CMakeLists.txt): the slice of a depth, and the
  * conservative assignment: a sphere is listed in every cluster that a point of it falls in, and in no
  * cluster whose box it cannot reach. */
 #include <setjmp.h>

@@ -1,5 +1,5 @@
 /* test_input_script.c - --script files: frames and ranges, file order within a frame, every action,
- * errors at file:line, and the events reaching common/input.c as the window's would. */
+ * errors at file:line, and the events reaching common/platform/input.c as the window's would. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

@@ -1,4 +1,4 @@
-/* test_mat4d.c - the double-precision 4x4 inverse (common/mat4d.c, compiled in by
+/* test_mat4d.c - the double-precision 4x4 inverse (common/base/mat4d.c, compiled in by
  * tests/CMakeLists.txt): a view-projection times its inverse is the identity, a known inverse comes
  * out exact, and a singular matrix is refused. */
 #include <setjmp.h>

@@ -1,6 +1,6 @@
 /* test_octahedral.c - the G-buffer's normal encoding (shaders/octahedral.glsl) mirrored in C:
  * how many degrees does storing a normal as two half floats cost, or as two fixed-point codes of
- * 8, 12 or 16 bits (the other layouts of common/gbuffer.h)? Directions: a dense Fibonacci
+ * 8, 12 or 16 bits (the other layouts of common/render/gbuffer.h)? Directions: a dense Fibonacci
  * sphere plus the hard places (poles, axes, the equator where the lower half folds over, the
  * axis lines of the lower half where the fold changes sign). Prints the numbers quoted in
  * docs/02_mrt_gbuffer.md. */
@@ -318,7 +318,7 @@ static void test_round_trip_half(void **unused)
     assert_true(nearest.sum_deg / nearest.count > 1e-5);
 }
 
-/* Fixed-point codes, the layouts other than `reference` (common/gbuffer.h): bounds a little above
+/* Fixed-point codes, the layouts other than `reference` (common/render/gbuffer.h): bounds a little above
  * what was measured here (printed: max 0.638, 0.0396, 0.00247 degrees; mean 0.294, 0.0184,
  * 0.00114), so a change to the encoder that costs precision fails. Four more bits are 16 times
  * finer; 2 x 12 bits reach the half floats' maximum (their mean is 0.0131). */

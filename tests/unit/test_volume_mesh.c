@@ -2,7 +2,7 @@
  *
  * A coarse icosphere has its vertices on the unit sphere, so its flat faces cut inside it: drawn
  * at the light's radius r it would miss the pixels near the sphere's edge and show a faceted light.
- * Scaled by 1 / inradius (common/light_volumes.c scales by r / inradius) every face plane is at
+ * Scaled by 1 / inradius (common/render/light_volumes.c scales by r / inradius) every face plane is at
  * least r from the centre, so the convex mesh contains the whole sphere. Checked here for the mesh
  * the renderer draws (1 subdivision, 80 triangles) and its neighbours, with every face plane
  * against >= 100,000 directions plus the worst cases (vertex, edge-midpoint, face-centre). */
@@ -18,7 +18,7 @@
 #include "mesh_data.h"
 #include "test_util.h"
 
-#define RENDERER_SUBDIVISIONS 1 /* the mesh common/light_volumes.c uses */
+#define RENDERER_SUBDIVISIONS 1 /* the mesh common/render/light_volumes.c uses */
 #define SAMPLE_DIRECTIONS 100000
 /* Everything below is computed in double from the same float vertices: rounding is ~1e-16. */
 #define INSIDE_EPSILON 1e-12

@@ -1,6 +1,6 @@
 /* bench_error.h - how far a picture is from the exact one, in linear radiance. No GL here: it works
  * on read-back arrays (fbo_read_float). The least lighting work a frame needs, the benchmark's other
- * measure besides time, is common/light_work.h (the window's overlay counts it too).
+ * measure besides time, is common/render/light_work.h (the window's overlay counts it too).
  *
  *   bench_error_measure_hdr(a, b, w, h, out)
  *                                          max / mean absolute difference and PSNR (peak 1.0) over

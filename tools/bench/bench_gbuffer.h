@@ -1,4 +1,4 @@
-/* bench_gbuffer.h - the G-buffer layouts swept (common/gbuffer.h): what each costs in bytes and in
+/* bench_gbuffer.h - the G-buffer layouts swept (common/render/gbuffer.h): what each costs in bytes and in
  * time, and what it loses against the geometry pass's own floats. One case per scene (the default
  * scene and the city, each with its own lights, at the default cut-off), every layout drawing
  * chapter 07's frame (deferred-volumes) in turn, frame by frame, like the main sweep's renderers.

@@ -122,7 +122,7 @@ void bench_gbuffer_write_md(FILE *f, const bench_state *st)
     const bench_options *o = &st->opt;
     fprintf(f,
             "\n## G-buffer layouts\n\n"
-            "Chapter 07's frame (deferred-volumes, cut-off 5/256) with every layout of common/gbuffer.h, "
+            "Chapter 07's frame (deferred-volumes, cut-off 5/256) with every layout of common/render/gbuffer.h, "
             "on each scene with its own lights, %dx%d; %d warm-up + %d timed frames per layout, layouts "
             "interleaved frame by frame; passes on the %s clock. Normal: angle between the decoded normal "
             "and the geometry pass's float normal. Position: distance between the position rebuilt from "

@@ -162,7 +162,7 @@ static bool set_lights(bench_options *o, const char *list)
 
 static bool set_renderers(bench_options *o, const char *list)
 {
-    /* The message lists the valid names (common/renderers.c). */
+    /* The message lists the valid names (chapters/course_renderers.c). */
     char bad[512];
     int n = snprintf(bad, sizeof bad, "unknown renderer in --renderers (one of:");
     for (int r = 0; r < bench_renderer_count() && n > 0 && n < (int)sizeof bad - 32; r++)
@@ -198,7 +198,7 @@ static void set_defaults(bench_options *o)
     o->max_frame_ms = 1500, o->case_budget_ms = 1500;
     o->error_max_lights = 256;
     o->seed = 1;
-    /* The course's scenes wherever the benchmark runs from (common/data_dir.h). */
+    /* The course's scenes wherever the benchmark runs from (common/base/data_dir.h). */
     static char scene_dir[4200];
     o->scene_dir = data_dir_path("assets/scenes", scene_dir, sizeof scene_dir) ? scene_dir : "assets/scenes";
     o->out_dir = "out";

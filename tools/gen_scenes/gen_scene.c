@@ -54,7 +54,7 @@ static void gen_scene_write_count(long n, FILE *f)
     fputs(gen_format_count(n, buf), f);
 }
 
-/* The reach is computed as the renderer will (common/light.c), so the comment states the light
+/* The reach is computed as the renderer will (common/scene/light.c), so the comment states the light
  * radii the renderer culls with, not an estimate. */
 static void gen_scene_light_reach(const gen_scene *s, double *lo, double *hi)
 {

@@ -7,7 +7,7 @@
  *   gen_scene_add_object(s, mesh, material, position, rotate_y, scale)
  *   gen_scene_add_light(s, r, position)                   a light of random colour and intensity
  *                                                         (0.8..1.2) drawn from r
- *   gen_scene_write(s, path)                              the .scene file common/scene.c reads
+ *   gen_scene_write(s, path)                              the .scene file common/scene/scene.c reads
  *
  * The add functions do not check the GEN_MAX_* limits: the recipes are fixed and stay inside
  * them. A scene is large (the object and light arrays): allocate it, do not put it on the stack.

@@ -1,0 +1,418 @@
+/* app_window.c - what a learner does in the window: move the camera, add lights, read the overlay,
+ * compare with forward; and what a --script asks for after a frame. (app.c only: app_internal.h) */
+#include "app_internal.h"
+
+#include "camera.h"
+#include "gl_util.h"
+#include "image.h"
+#include "input.h"
+#include "light.h"
+#include "light_work.h"
+#include "log.h"
+#include "platform.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define ORBIT_RADIANS_PER_PIXEL 0.006f
+#define LOOK_RADIANS_PER_PIXEL 0.003f
+#define FLY_EXTENTS_PER_SECOND 0.4f /* the scene's largest side crossed in 2.5 s */
+#define DIVIDER_STEP 0.05f
+#define DIVIDER_GRAB_PIXELS 8.0
+#define LIGHTS_MAX 65536
+#define PAUSE_BADGE_SECONDS 2.0
+
+bool app_window_create(app_window *w, app *a, const cli_options *opt)
+{
+    memset(w, 0, sizeof *w);
+    w->home = a->scene.camera;
+    w->overlay_on = opt->overlay;
+    w->divider = 0.5f;
+    w->compare = opt->compare ? (compare_mode)cli_choice_index((const char *const[]){"off", "split", "difference", NULL}, opt->compare) : COMPARE_OFF;
+    float lo[3], hi[3];
+    light_generate_bounds(&a->scene, lo, hi);
+    w->extent = fmaxf(fmaxf(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+    if (opt->script && !input_script_load(opt->script, &w->script))
+        return false;
+    w->have_script = opt->script != NULL;
+    w->shown = &a->target;
+    w->ideal = -1;
+    return true;
+}
+
+void app_window_destroy(app_window *w)
+{
+    fbo_destroy(&w->ideal_target);
+    if (w->have_cmp)
+        compare_destroy(&w->cmp);
+    if (w->have_text)
+        overlay_destroy(&w->text);
+    fbo_destroy(&w->display);
+    input_script_destroy(&w->script);
+}
+
+bool app_window_resize(app_window *w, const app *a)
+{
+    fbo_destroy(&w->display);
+    fbo_destroy(&w->ideal_target);
+    return !w->have_cmp || compare_resize(&w->cmp, a->width, a->height);
+}
+
+/* ---- camera -------------------------------------------------------------------------------- */
+
+static int divider_pixel(const app_window *w, const app *a) { return (int)lroundf(w->divider * (float)a->width); }
+
+/* Mouse and held keys since the last frame, applied to the scene's camera (gpu_scene reads it). */
+void app_window_move(app_window *w, app *a, double dt)
+{
+    scene_camera *c = &a->scene.camera;
+    input_mouse m = input_take_mouse();
+    bool on_divider = w->compare == COMPARE_SPLIT &&
+                      fabs(m.press_x[INPUT_BUTTON_LEFT] - divider_pixel(w, a)) <= DIVIDER_GRAB_PIXELS;
+    if (m.pressed[INPUT_BUTTON_LEFT])
+        w->dragging_divider = on_divider;
+    if (m.held[INPUT_BUTTON_LEFT] && w->dragging_divider)
+        w->divider = fminf(fmaxf((float)(m.x / a->width), 0.0f), 1.0f);
+    else if (m.held[INPUT_BUTTON_LEFT] && !m.pressed[INPUT_BUTTON_LEFT])
+        camera_orbit(c, -(float)m.dx * ORBIT_RADIANS_PER_PIXEL, (float)m.dy * ORBIT_RADIANS_PER_PIXEL); /* grab the world */
+    if (m.held[INPUT_BUTTON_RIGHT] && !m.pressed[INPUT_BUTTON_RIGHT])
+        camera_look(c, -(float)m.dx * LOOK_RADIANS_PER_PIXEL, -(float)m.dy * LOOK_RADIANS_PER_PIXEL);
+    if (m.scroll != 0.0)
+        camera_zoom(c, (float)m.scroll);
+    float step = FLY_EXTENTS_PER_SECOND * w->extent * (float)dt;
+    float ahead = (float)(input_key_held('W') - input_key_held('S')) * step;
+    float right = (float)(input_key_held('D') - input_key_held('A')) * step;
+    if (ahead != 0.0f || right != 0.0f)
+        camera_fly(c, ahead, right);
+}
+
+static void print_pose(const app *a)
+{
+    char line[512];
+    camera_format(&a->scene.camera, line, sizeof line);
+    printf("%s\n", line); /* stdout: ready to paste into a scene file, or after --camera */
+    fflush(stdout);
+}
+
+/* ---- lights -------------------------------------------------------------------------------- */
+
+/* A white light half-way to the target, reaching as far as half that distance at the default cut-off. */
+static void add_light(app *a)
+{
+    const scene_camera *c = &a->scene.camera;
+    vec3 dir;
+    glm_vec3_sub((float *)c->target, (float *)c->eye, dir);
+    float distance = glm_vec3_norm(dir);
+    float reach = fmaxf(0.5f * distance, 0.5f);
+    scene_light l = {.color = {1.0f, 0.95f, 0.85f}, .intensity = 1.0f, .kc = 1.0f, .kl = 0.0f,
+                     .kq = (float)((1.0 / LIGHT_DEFAULT_CUTOFF - 1.0) / ((double)reach * reach))};
+    glm_vec3_scale(dir, 0.5f, dir);
+    glm_vec3_add((float *)c->eye, dir, l.position);
+    if (scene_add_light(&a->scene, &l))
+        log_info("lights: %d (added one at %.2f %.2f %.2f)", a->scene.light_count, (double)l.position[0],
+                 (double)l.position[1], (double)l.position[2]);
+}
+
+static void scale_lights(app *a, bool twice)
+{
+    int n = a->scene.light_count;
+    n = twice ? (n > 0 ? n * 2 : 1) : n / 2;
+    if (n > LIGHTS_MAX) {
+        log_info("lights: at most %d here (--lights takes more)", LIGHTS_MAX);
+        return;
+    }
+    if (light_generate(&a->scene, n, a->options->seed))
+        log_info("lights: %d generated", n);
+}
+
+/* ---- keys ---------------------------------------------------------------------------------- */
+
+bool app_window_key(app_window *w, app *a, key_action action)
+{
+    switch (action) {
+    case KEY_ACTION_FRAME_SCENE: {
+        float lo[3], hi[3];
+        light_generate_bounds(&a->scene, lo, hi);
+        camera_frame(&a->scene.camera, lo, hi, (float)a->width / (float)a->height);
+        return true;
+    }
+    case KEY_ACTION_HOME_CAMERA: a->scene.camera = w->home; return true;
+    case KEY_ACTION_PRINT_POSE: print_pose(a); return true;
+    case KEY_ACTION_ADD_LIGHT: add_light(a); return true;
+    case KEY_ACTION_LIGHTS_DOUBLE: scale_lights(a, true); return true;
+    case KEY_ACTION_LIGHTS_HALF: scale_lights(a, false); return true;
+    case KEY_ACTION_OVERLAY: w->overlay_on = !w->overlay_on; return true;
+    case KEY_ACTION_KEY_LIST: w->key_list_on = !w->key_list_on; return true;
+    case KEY_ACTION_PAUSE: w->badge_until = platform_time() + PAUSE_BADGE_SECONDS; return false; /* the loop pauses */
+    case KEY_ACTION_COMPARE:
+        w->compare = (compare_mode)((w->compare + 1) % COMPARE_MODE_COUNT);
+        log_info("compare: %s", compare_mode_name(w->compare));
+        return true;
+    case KEY_ACTION_DIVIDER_LEFT: w->divider = fmaxf(w->divider - DIVIDER_STEP, 0.0f); return true;
+    case KEY_ACTION_DIVIDER_RIGHT: w->divider = fminf(w->divider + DIVIDER_STEP, 1.0f); return true;
+    default: return false;
+    }
+}
+
+/* ---- compare ------------------------------------------------------------------------------- */
+
+/* After the chapter's frame, inside the frame timer: forward under its own pass name, then both
+ * into one picture. */
+bool app_window_compare(app_window *w, app *a, bool (*draw_forward)(app *a, GLuint target))
+{
+    w->shown = &a->target;
+    if (w->compare == COMPARE_OFF)
+        return true;
+    if (!w->have_cmp && !(w->have_cmp = compare_create(&w->cmp, a->width, a->height)))
+        return false;
+    frame_timer_mark(APP_COMPARE_PASS);
+    const app_forward_options o = {0};
+    bool drawn = draw_forward ? draw_forward(a, w->cmp.forward.id)
+                              : app_forward_draw(&a->forward, "forward", &a->gs, w->cmp.forward.id, o, NULL);
+    if (!drawn ||
+        !compare_compose(&w->cmp, &a->target, w->compare, divider_pixel(w, a)))
+        return false;
+    w->shown = &w->cmp.shown;
+    return true;
+}
+
+/* ---- the ideal work ------------------------------------------------------------------------ */
+
+/* FNV-1a over what decides the ideal count: camera, lights, cut-off, time, size. */
+static unsigned frame_key(const app *a)
+{
+    unsigned h = 2166136261u;
+    const unsigned char *parts[] = {(const void *)&a->scene.camera, (const void *)&a->cutoff, (const void *)&a->time,
+                                    (const void *)&a->width, (const void *)&a->height, (const void *)&a->gs.light_count};
+    const size_t sizes[] = {sizeof a->scene.camera, sizeof a->cutoff, sizeof a->time, sizeof a->width, sizeof a->height,
+                            sizeof a->gs.light_count};
+    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++)
+        for (size_t i = 0; i < sizes[k]; i++)
+            h = (h ^ parts[k][i]) * 16777619u;
+    return h;
+}
+
+/* The pairs a perfect light volume would shade (common/render/light_work.h), from the depth of a forward
+ * frame read back: a CPU count, so only while paused and only when the frame changed. */
+static void count_ideal(app_window *w, app *a)
+{
+    unsigned key = frame_key(a);
+    if (w->ideal >= 0 && key == w->ideal_key)
+        return;
+    w->ideal = -1;
+    const fbo_desc d = {.color_formats = {GL_RGBA8}, .color_count = 1, .depth_format = GL_DEPTH_COMPONENT32F,
+                        .name = "ideal count"};
+    size_t n = (size_t)a->width * (size_t)a->height;
+    float *depth = malloc(n * sizeof *depth);
+    double *positions = malloc(4 * n * sizeof *positions);
+    if (depth && positions && (w->ideal_target.id || fbo_create(&w->ideal_target, &d, a->width, a->height)) &&
+        app_forward_draw(&a->forward, "forward", &a->gs, w->ideal_target.id, (app_forward_options){0}, NULL)) {
+        fbo_read_depth(&w->ideal_target, depth);
+        const float *vp = (const float *)a->gs.view.view_proj;
+        light_work_positions(depth, a->width, a->height, vp, positions);
+        w->ideal = light_work_ideal_pairs(positions, a->width, a->height, vp, a->gs.lights, a->gs.light_count);
+        w->ideal_key = key;
+    }
+    free(depth);
+    free(positions);
+}
+
+/* ---- overlay ------------------------------------------------------------------------------- */
+
+static const char *gl_name(GLenum e)
+{
+    switch (e) {
+    case GL_FRONT: return "front";
+    case GL_BACK: return "back";
+    case GL_LESS: return "LESS";
+    case GL_LEQUAL: return "LEQUAL";
+    case GL_GREATER: return "GREATER";
+    case GL_GEQUAL: return "GEQUAL";
+    case GL_EQUAL: return "EQUAL";
+    case GL_ALWAYS: return "ALWAYS";
+    case GL_NOTEQUAL: return "NOTEQUAL";
+    case GL_ONE: return "ONE";
+    case GL_ZERO: return "ZERO";
+    case GL_SRC_ALPHA: return "SRC_ALPHA";
+    case GL_ONE_MINUS_SRC_ALPHA: return "ONE_MINUS_SRC_ALPHA";
+    default: return "?";
+    }
+}
+
+/* "cull front, depth GREATER (no writes), clamp, blend ONE+ONE[, stencil NOTEQUAL 0]" */
+static int describe_pass(const gl_pass_state *s, char *out, size_t size)
+{
+    return snprintf(out, size, "cull %s, depth %s%s%s, blend %s%s%s%s%s%s", s->cull ? gl_name(s->cull) : "none",
+                    s->depth_func ? gl_name(s->depth_func) : "off", s->depth_write ? "" : " (no writes)",
+                    s->depth_clamp ? ", clamp" : "", s->blend[0] ? gl_name(s->blend[0]) : "off", s->blend[0] ? "+" : "",
+                    s->blend[0] ? gl_name(s->blend[1]) : "", s->stencil_func ? ", stencil " : "",
+                    s->stencil_func ? gl_name(s->stencil_func) : "", s->stencil_func ? " 0" : "");
+}
+
+/* Appends printf-style text at out[*used]; never overflows. */
+static void put(char *out, size_t size, size_t *used, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+static void put(char *out, size_t size, size_t *used, const char *fmt, ...)
+{
+    if (*used >= size)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(out + *used, size - *used, fmt, ap);
+    va_end(ap);
+    *used = n < 0 ? size : *used + (size_t)n;
+}
+
+/* The frame's time split into the chapter's side and the compare pass. */
+static void put_times(const app_window *w, const app *a, char *out, size_t size, size_t *used)
+{
+    /* the half-second average; the last frame's times until there is one (a single headless frame) */
+    const frame_times *t = w->times.count > 0 ? &w->times : &a->timer.last;
+    double compare_ms = 0.0;
+    put(out, size, used, "passes (ms):");
+    for (int k = 0; k < t->count; k++) {
+        if (strcmp(t->names[k], APP_COMPARE_PASS) == 0)
+            compare_ms += t->ms[k];
+        else
+            put(out, size, used, " %s %.2f%s", t->names[k], t->ms[k], k + 1 < t->count ? "," : "");
+    }
+    double own = t->frame_ms - compare_ms;
+    put(out, size, used, "\nframe %.2f ms = %.0f fps (clock: %s)\n", own, own > 0 ? 1000.0 / own : 0.0,
+        frame_timer_clock(&a->timer));
+    if (w->compare != COMPARE_OFF)
+        put(out, size, used, "compare %s: forward %.2f ms (left) | %s %.2f ms (right)\n", compare_mode_name(w->compare),
+            compare_ms, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward", own);
+}
+
+int app_window_overlay_text(const app_window *w, const app *a, bool paused, char *out, size_t size)
+{
+    size_t used = 0;
+    put(out, size, &used, "%s | renderer %s%s%s | %dx%d\n", a->cli->program,
+        a->cli->renderers ? a->cli->renderers[a->renderer] : "forward", a->cli->views ? " | view " : "",
+        a->cli->views ? a->cli->views[a->view] : "", a->width, a->height);
+    put(out, size, &used, "lights %d active, %d culled (cut-off %.4g%s, %s falloff)\n", a->gs.light_count,
+        a->gs.culled_count, a->cutoff, a->cutoff == 0 ? ": exact" : "",
+        a->gs.falloff == SHADER_FALLOFF_WINDOWED ? "windowed" : "hard");
+    put_times(w, a, out, size, &used);
+    if (a->shaded_pixels >= 0 && w->ideal > 0 && paused)
+        put(out, size, &used, "lighting fragments %ld = %.2f x the ideal %lld (pixel, light) pairs\n",
+            a->shaded_pixels, (double)a->shaded_pixels / (double)w->ideal, w->ideal);
+    else if (a->shaded_pixels >= 0)
+        put(out, size, &used, "lighting fragments %ld = %.2f per pixel (Space: pause to count the ideal)\n",
+            a->shaded_pixels, (double)a->shaded_pixels / ((double)a->width * a->height));
+    if (a->pass_state && !app_renderer_is_forward(a)) { /* the chapter's own renderer */
+        char pass[160];
+        describe_pass(a->pass_state, pass, sizeof pass);
+        put(out, size, &used, "lighting pass: %s\n", pass);
+    }
+    const scene_camera *c = &a->scene.camera;
+    put(out, size, &used, "eye %.2f %.2f %.2f  target %.2f %.2f %.2f\n", (double)c->eye[0], (double)c->eye[1],
+        (double)c->eye[2], (double)c->target[0], (double)c->target[1], (double)c->target[2]);
+    put(out, size, &used, "%sH hides this, F1 lists the keys", paused ? "PAUSED (Space resumes) | " : "");
+    return (int)used;
+}
+
+/* ---- what the window shows ----------------------------------------------------------------- */
+
+bool app_window_save(const fbo *f, const char *path)
+{
+    image img;
+    if (!image_create(&img, f->width, f->height))
+        return false;
+    bool ok = fbo_read_rgba8(f, 0, img.pixels);
+    image_flip_rows(&img); /* image files store the top row first */
+    ok = ok && image_write(path, &img);
+    image_destroy(&img);
+    if (ok)
+        log_info("wrote %s (%dx%d)", path, f->width, f->height);
+    return ok;
+}
+
+/* The picture, then the overlay, the key list or, for PAUSE_BADGE_SECONDS after Space, a badge: what the window shows
+ * (and what a script's screenshot reads). NULL when nothing shows it (headless, no script). */
+const fbo *app_window_display(app_window *w, app *a, bool paused)
+{
+    if (!platform_is_windowed() && !w->have_script && !a->options->overlay)
+        return NULL;
+    const fbo_desc d = {.color_formats = {GL_RGBA8}, .color_count = 1, .name = "display"};
+    if ((!w->display.id && !fbo_create(&w->display, &d, a->width, a->height)) ||
+        (!w->have_text && !(w->have_text = overlay_create(&w->text))))
+        return NULL;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, w->shown->id);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, w->display.id);
+    glBlitFramebuffer(0, 0, a->width, a->height, 0, 0, a->width, a->height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    char text[2048];
+    if (w->overlay_on && paused)
+        count_ideal(w, a);
+    if (w->overlay_on) {
+        app_window_overlay_text(w, a, paused, text, sizeof text);
+        overlay_draw(&w->text, w->display.id, a->width, a->height, text, OVERLAY_TOP_LEFT);
+    } else if (platform_time() < w->badge_until && !w->key_list_on) {
+        overlay_draw(&w->text, w->display.id, a->width, a->height, paused ? "PAUSED (Space resumes)" : "RESUMED",
+                     OVERLAY_TOP_LEFT);
+    }
+    if (w->key_list_on) {
+        FILE *f = fmemopen(text, sizeof text - 1, "w");
+        if (f) {
+            keys_print_help(f, a->cli->program, a->cli->views != NULL);
+            text[ftell(f)] = '\0';
+            fclose(f);
+            overlay_draw(&w->text, w->display.id, a->width, a->height, text + 1, OVERLAY_TOP_RIGHT);
+        }
+    }
+    return &w->display;
+}
+
+/* ---- the script's after-frame events ------------------------------------------------------- */
+
+static bool script_objects(app_window *w, const script_event *e, int *rc)
+{
+    long live = gl_live_objects();
+    if (e->kind == SCRIPT_OBJECTS_MARK) {
+        w->objects_marked = live;
+        return true;
+    }
+    if (live == w->objects_marked)
+        return true;
+    log_error("%s:%d: %ld GL objects alive, %ld at the mark: %ld leaked", w->script.name, e->line, live,
+              w->objects_marked, live - w->objects_marked);
+    *rc = EXIT_CODE_RUNTIME;
+    return false;
+}
+
+bool app_window_after_frame(app_window *w, app *a, const fbo *shown, bool paused, int *rc)
+{
+    int first, count;
+    input_script_range(&w->script, a->frame_index, &first, &count);
+    for (int i = first; i < first + count; i++) {
+        const script_event *e = &w->script.events[i];
+        char text[2048];
+        switch (e->kind) {
+        case SCRIPT_SCREENSHOT:
+            if (!app_window_save(shown, e->path)) {
+                *rc = EXIT_CODE_RUNTIME;
+                return false;
+            }
+            break;
+        case SCRIPT_OVERLAY:
+            if (paused)
+                count_ideal(w, a);
+            app_window_overlay_text(w, a, paused, text, sizeof text);
+            for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n"))
+                printf("overlay: %s\n", line);
+            fflush(stdout);
+            break;
+        case SCRIPT_OBJECTS_MARK:
+        case SCRIPT_OBJECTS_CHECK:
+            if (!script_objects(w, e, rc))
+                return false;
+            break;
+        case SCRIPT_QUIT: return false;
+        default: break;
+        }
+    }
+    return true;
+}

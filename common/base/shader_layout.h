@@ -1,0 +1,59 @@
+/* shader_layout.h - every number the C code and the shaders must agree on, written once.
+ *
+ * Each X(NAME, VALUE) below is the C constant SHADER_NAME, and the program loader (gl_program.c)
+ * injects `#define SHADER_NAME VALUE` into every shader after its #version line, so a shader reads
+ * SHADER_LIGHT_TEXELS exactly as the C code that fills the texture does.
+ *
+ *   light texels (RGBA32F):  position.xyz + radius, radiance + cos(outer), attenuation kc kl kq +
+ *                            cos(inner), spot direction xyz (unit) + 0; a point light is a spot
+ *                            without a cone: direction 0, both cosines -1 (shaders/shading.glsl)
+ *   object texels (RGBA32F): world matrix columns 0-3, normal matrix columns 4-6,
+ *                            albedo + specular 7, shininess + opacity 8 (x, y)
+ *   views and tone maps:     the values of the u_view and u_tonemap uniforms; the overdraw view's
+ *                            count per fragment and the heat map's saturation count
+ *   texture units:           where each pass binds its textures (GLSL 3.30 has no binding layout)
+ *   G-buffer encodings:      how a layout's RT1 holds the normal (common/render/gbuffer.h lists the layouts)
+ */
+#ifndef COMMON_SHADER_LAYOUT_H
+#define COMMON_SHADER_LAYOUT_H
+
+#define SHADER_LAYOUT(X)                                                                                   \
+    X(LIGHT_TEXELS, 4)                                                                                     \
+    X(LIGHT_TEXEL_SPOT, 3) /* the spot's direction; its cosines are the w of texels 1 and 2 */             \
+    X(OBJECT_TEXELS, 9)                                                                                    \
+    X(OBJECT_TEXEL_NORMAL, 4)                                                                              \
+    X(OBJECT_TEXEL_MATERIAL, 7)                                                                            \
+    X(OBJECT_TEXEL_SHININESS, 8)                                                                           \
+    X(OBJECT_TEXEL_OPACITY, 8) /* the y of the shininess texel: the material's opacity (chapter 12) */     \
+    X(VIEW_LIT, 0)                                                                                         \
+    X(VIEW_RING, 1)                                                                                        \
+    X(VIEW_OVERDRAW, 2)                                                                                    \
+    X(GBUFFER_VIEW_ALBEDO, 0)                                                                              \
+    X(GBUFFER_VIEW_NORMAL, 1)                                                                              \
+    X(GBUFFER_VIEW_DEPTH, 2)                                                                               \
+    X(GBUFFER_VIEW_SPECULAR, 3)                                                                            \
+    X(GBUFFER_VIEW_NORMAL_RAW, 4)   /* the decoded normal as floats (the benchmark's probe) */             \
+    X(GBUFFER_VIEW_POSITION_RAW, 5) /* the position rebuilt from depth, as floats (the same) */            \
+    X(GBUFFER_NORMAL_HALF, 0)   /* RT1 RGBA16F: octahedral x, y as half floats, specular, shininess */     \
+    X(GBUFFER_NORMAL_BYTES, 1)  /* RT1 RGBA8: octahedral 2 x 8 bits in r, g; shininess in a */             \
+    X(GBUFFER_NORMAL_PACKED, 2) /* RT1 RGBA8: octahedral 2 x 12 bits packed in r, g, b; shininess in a */  \
+    X(GBUFFER_NORMAL_SHORTS, 3) /* RT1 RGBA16: octahedral 2 x 16 bits in r, g; shininess in a */           \
+    X(OVERDRAW_SCALE, 16)  /* the overdraw view adds 1 / 16 per lighting fragment */                       \
+    X(HEAT_MAX, 16)        /* heat map (shaders/heat.glsl): 16 and more look alike */                      \
+    X(TONEMAP_NONE, 0)                                                                                     \
+    X(TONEMAP_EXPOSURE, 1)                                                                                 \
+    X(TONEMAP_REINHARD, 2)                                                                                 \
+    X(FALLOFF_HARD, 0)     /* 1 / (kc + kl d + kq d^2), cut to 0 at the radius */                           \
+    X(FALLOFF_WINDOWED, 1) /* the same times (1 - (d / r)^4)^2: zero, with zero slope, at the radius */     \
+    X(UNIT_LIGHTS, 0)                                                                                      \
+    X(UNIT_LIGHT_LIST, 1)                                                                                  \
+    X(UNIT_OBJECTS, 2)                                                                                     \
+    X(UNIT_GBUFFER, 3) /* three units: albedo, normal, depth */                                           \
+    X(UNIT_LIGHT_INDEX, 6)                                                                                 \
+    X(UNIT_IMAGE, 0)   /* a full-screen pass's one input texture */
+
+#define SHADER_LAYOUT_ENUM(name, value) SHADER_##name = (value),
+enum { SHADER_LAYOUT(SHADER_LAYOUT_ENUM) };
+#undef SHADER_LAYOUT_ENUM
+
+#endif

@@ -1,0 +1,456 @@
+/* cli.c - see cli.h. */
+#include "cli.h"
+
+#include "keys.h"
+#include "log.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+
+int cli_choice_index(const char *const *choices, const char *value)
+{
+    if (!choices || !value)
+        return -1;
+    for (int i = 0; choices[i]; i++)
+        if (strcmp(choices[i], value) == 0)
+            return i;
+    return -1;
+}
+
+static void print_choices(FILE *stream, const char *const *choices)
+{
+    for (int i = 0; choices[i]; i++)
+        fprintf(stream, "%s%s", i ? "|" : "", choices[i]);
+}
+
+/* Words of `text`, from `column` of a line that holds the option's name (padded: at_start, no space
+ * before the first word), wrapped before HELP_WIDTH onto lines that start at HELP_COLUMN. */
+#define HELP_COLUMN 27
+#define HELP_WIDTH 92
+static void print_wrapped(FILE *stream, const char *text, int column, bool at_start)
+{
+    bool line_start = at_start;
+    while (*text) {
+        int word = (int)strcspn(text, " ");
+        if (!line_start && column + 1 + word > HELP_WIDTH) {
+            fprintf(stream, "\n%*s", HELP_COLUMN, "");
+            column = HELP_COLUMN;
+        } else if (!line_start) {
+            fputc(' ', stream);
+            column++;
+        }
+        fprintf(stream, "%.*s", word, text);
+        column += word;
+        line_start = false;
+        text += word;
+        text += strspn(text, " ");
+    }
+    fputc('\n', stream);
+}
+
+/* A chapter's own option: its help, its choices and its default, wrapped. */
+static void print_extra(FILE *stream, const cli_extra *e)
+{
+    char text[1024];
+    int n = snprintf(text, sizeof text, "%s", e->help);
+    for (int i = 0; e->choices && e->choices[i] && n < (int)sizeof text; i++)
+        n += snprintf(text + n, sizeof text - (size_t)n, "%s%s", i ? "|" : " (", e->choices[i]);
+    if (e->choices && n < (int)sizeof text)
+        n += snprintf(text + n, sizeof text - (size_t)n, ")");
+    if (e->default_value && n < (int)sizeof text)
+        snprintf(text + n, sizeof text - (size_t)n, " (default %s)", e->default_value);
+    int column = fprintf(stream, "  --%s %s", e->name, e->metavar);
+    bool padded = column < HELP_COLUMN; /* else one space follows the name */
+    if (padded)
+        column += fprintf(stream, "%*s", HELP_COLUMN - column, "");
+    print_wrapped(stream, text, column, padded);
+}
+
+void cli_print_help(const cli_desc *desc, FILE *stream)
+{
+    fprintf(stream, "usage: %s [options]\n%s\n\noptions:\n", desc->program, desc->summary);
+    fprintf(stream,
+            "  --help                   this text\n"
+            "  --headless[=egl|osmesa]  no window: EGL surfaceless (default), or OSMesa\n"
+            "  --size WxH               framebuffer size in pixels (default 800x600)\n"
+            "  --frames N               frames to render, then exit (window default: until closed;\n"
+            "                           headless default: 1)\n"
+            "  --screenshot PATH        write the last frame as PNG (atomically)\n"
+            "  --scene PATH             scene file (default: %s in the data folder)\n"
+            "  --data-dir DIR           the folder with shaders/ and assets/ (default: $COURSE_DATA_DIR,\n"
+            "                           else an installed prefix's share/deferred_course, else the\n"
+            "                           source tree)\n",
+            CLI_DEFAULT_SCENE);
+    if (desc->renderers) {
+        fprintf(stream, "  --renderer NAME          ");
+        print_choices(stream, desc->renderers);
+        fprintf(stream, " (default %s)\n", desc->renderers[0]);
+    }
+    if (desc->views) {
+        fprintf(stream, "  --view NAME              ");
+        print_choices(stream, desc->views);
+        fprintf(stream, " (default %s)\n", desc->views[0]);
+    }
+    for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++)
+        print_extra(stream, &desc->extras[i]);
+    fprintf(stream,
+            "  --lights N               replace the scene's lights by N generated ones\n"
+            "  --seed S                 seed of the light generator (default 1)\n"
+            "  --time T                 animation time in seconds (default 0)\n"
+            "  --paused                 window: start with the animation stopped at --time\n"
+            "  --cutoff C               attenuation cut-off (default 5/256 = %.6f; 0 = exact, no cut-off)\n"
+            "  --bench                  time frames (glFinish + monotonic clock) and print a 'bench:' line\n"
+            "  --warmup N               untimed frames before --bench timing (default 3)\n"
+            "  --gl-debug               report GL debug messages; any GL error fails the run\n"
+            "  --resize-cycle N         after the first frame, resize N times and back; fail if GL\n"
+            "                           objects leaked (window: resizes the window)\n"
+            "  --minimise-cycle N       window: after the first frame, minimise and restore N times;\n"
+            "                           fail if a frame was drawn while minimised or GL objects leaked\n"
+            "                           (exit 77 when nothing can minimise it: no window manager)\n"
+            "  --camera \"POSE\"          the scene's camera with these attributes replaced, as in a\n"
+            "                           scene's camera line: \"eye X Y Z target X Y Z [up X Y Z] [fovy F]\"\n"
+            "  --falloff hard|windowed  how lights fade to their radius (default: the scene's, else hard):\n"
+            "                           windowed multiplies by (1 - (d/r)^4)^2, so the cut-off leaves no step\n"
+            "  --gbuffer LAYOUT         the G-buffer's formats (common/render/gbuffer.h, docs/02_mrt_gbuffer.md):\n"
+            "                           compact       sRGB8 albedo + specular; normal in 2x12 bits +\n"
+            "                                         shininess in RGBA8; D32F: 12 bytes/pixel (default)\n"
+            "                           reference     sRGB8 albedo, RGBA16F normal + material, D32F: 16\n"
+            "                           compact-d24s8 compact with a 24-bit depth and stencil: 12\n"
+            "                           reversed-z    compact with a reversed float depth: 12 (GL 4.5 or\n"
+            "                                         ARB_clip_control; chapters 02-03 only)\n"
+            "                           linear-albedo compact with linear RGBA8 albedo: 12\n"
+            "                           oct8          compact with a 2x8-bit normal: 12\n"
+            "                           oct16         compact with a 2x16-bit normal in RGBA16: 16\n"
+            "  --compare MODE           off|split|difference: forward left of a divider and this chapter's\n"
+            "                           renderer right of it, or their difference beyond 1/255 as a heat map (key M)\n"
+            "  --overlay                the on-screen overlay from the start, also in --screenshot (key H)\n"
+            "  --script FILE            timed keys and mouse events, as if typed (format:\n"
+            "                           common/platform/input_script.h; the tests drive the window with it)\n"
+            "  --gl-info                print the GL context's renderer, version and limits, then exit\n"
+            "  --verbose                more log lines\n",
+            desc->default_cutoff);
+    keys_print_help(stream, desc->program, desc->views != NULL);
+    fprintf(stream, "\nexit codes: 0 ok, 1 runtime failure, 2 usage or input error, 77 no GL context\n");
+}
+
+bool cli_parse_int(const char *s, long lo, long hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo || v > hi)
+        return false;
+    *out = (int)v;
+    return true;
+}
+
+bool cli_parse_double(const char *s, double lo, double hi, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno || end == s || *end || !isfinite(v) || v < lo || v > hi)
+        return false;
+    *out = v;
+    return true;
+}
+
+static bool parse_size(const char *s, int *w, int *h)
+{
+    char buf[64];
+    const char *x = strchr(s, 'x');
+    if (!x || (size_t)(x - s) >= sizeof buf)
+        return false;
+    memcpy(buf, s, (size_t)(x - s));
+    buf[x - s] = '\0';
+    return cli_parse_int(buf, 1, CLI_MAX_SIZE, w) && cli_parse_int(x + 1, 1, CLI_MAX_SIZE, h);
+}
+
+static int usage_error(const cli_desc *desc, const char *fmt, const char *arg)
+{
+    char msg[512];
+    snprintf(msg, sizeof msg, fmt, arg);
+    log_error("%s: %s (see --help)", desc->program, msg);
+    return EXIT_CODE_USAGE;
+}
+
+/* "--name value" or "--name=value"; returns the value or NULL. */
+static const char *option_value(int argc, char **argv, int *i, const char *name)
+{
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0)
+        return NULL;
+    if (a[n] == '=')
+        return a + n + 1;
+    if (a[n] == '\0' && *i + 1 < argc)
+        return argv[++*i];
+    return NULL;
+}
+
+static bool is_option(const char *arg, const char *name)
+{
+    size_t n = strlen(name);
+    return strncmp(arg, name, n) == 0 && (arg[n] == '\0' || arg[n] == '=');
+}
+
+const char *cli_extra_value(const cli_desc *desc, const cli_options *options, const char *name)
+{
+    for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++)
+        if (strcmp(desc->extras[i].name, name) == 0)
+            return options->extra_values[i];
+    return NULL;
+}
+
+/* Options that take a number: where it goes, its range, and what the message says it must be. */
+typedef enum number_kind { NUMBER_INT, NUMBER_SEED, NUMBER_FLOAT, NUMBER_DOUBLE } number_kind;
+static const struct number_option {
+    const char *name;
+    number_kind kind;
+    size_t offset;
+    double lo, hi;
+    const char *expected;
+} number_options[] = {
+    {"--frames", NUMBER_INT, offsetof(cli_options, frames), 1, INT_MAX, "a whole number >= 1"},
+    {"--warmup", NUMBER_INT, offsetof(cli_options, warmup), 0, 100000, "a whole number >= 0"},
+    {"--lights", NUMBER_INT, offsetof(cli_options, lights), 0, 1000000, "0..1000000"},
+    {"--seed", NUMBER_SEED, offsetof(cli_options, seed), 0, INT_MAX, "a whole number >= 0"},
+    {"--time", NUMBER_FLOAT, offsetof(cli_options, time), -1e6, 1e6, "seconds"},
+    {"--resize-cycle", NUMBER_INT, offsetof(cli_options, resize_cycle), 0, 100000, "0..100000"},
+    {"--minimise-cycle", NUMBER_INT, offsetof(cli_options, minimise_cycle), 0, 1000, "0..1000"},
+    {"--cutoff", NUMBER_DOUBLE, offsetof(cli_options, cutoff), 0, 1e6, "a number >= 0"},
+};
+
+/* Options without a value. */
+static const struct flag_option {
+    const char *name;
+    size_t offset;
+} flag_options[] = {
+    {"--bench", offsetof(cli_options, bench)},
+    {"--paused", offsetof(cli_options, paused)},
+    {"--gl-debug", offsetof(cli_options, gl_debug)},
+    {"--verbose", offsetof(cli_options, verbose)},
+    {"--gl-info", offsetof(cli_options, gl_info)},
+    {"--overlay", offsetof(cli_options, overlay)},
+};
+
+#define COUNT(array) ((int)(sizeof array / sizeof array[0]))
+
+static void set_defaults(const cli_desc *desc, cli_options *out)
+{
+    memset(out, 0, sizeof *out);
+    out->width = 800;
+    out->height = 600;
+    out->frames = -1;
+    out->warmup = 3;
+    out->renderer = desc->renderers ? desc->renderers[0] : NULL;
+    out->view = desc->views ? desc->views[0] : NULL;
+    out->lights = -1;
+    out->seed = 1;
+    out->cutoff = desc->default_cutoff;
+#ifndef NDEBUG
+    out->gl_debug = true;
+#endif
+    for (int i = 0; i < CLI_MAX_EXTRAS && desc->extras[i].name; i++)
+        out->extra_values[i] = desc->extras[i].default_value;
+}
+
+static bool store_number(const struct number_option *o, const char *v, cli_options *out)
+{
+    char *field = (char *)out + o->offset;
+    int n;
+    double d;
+    switch (o->kind) {
+    case NUMBER_INT: return cli_parse_int(v, (long)o->lo, (long)o->hi, (int *)(void *)field);
+    case NUMBER_SEED:
+        if (!cli_parse_int(v, (long)o->lo, (long)o->hi, &n))
+            return false;
+        *(uint32_t *)(void *)field = (uint32_t)n;
+        return true;
+    case NUMBER_FLOAT:
+        if (!cli_parse_double(v, o->lo, o->hi, &d))
+            return false;
+        *(float *)(void *)field = (float)d;
+        return true;
+    case NUMBER_DOUBLE: return cli_parse_double(v, o->lo, o->hi, (double *)(void *)field);
+    }
+    return false;
+}
+
+/* A flag or a number option at argv[*i]: true when it is one (a bad value sets *rc), false if not. */
+static bool parse_table_option(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out, int *rc)
+{
+    const char *a = argv[*i], *v;
+    for (int k = 0; k < COUNT(flag_options); k++) {
+        if (strcmp(a, flag_options[k].name) == 0) {
+            *(bool *)(void *)((char *)out + flag_options[k].offset) = true;
+            return true;
+        }
+    }
+    for (int k = 0; k < COUNT(number_options); k++) {
+        const struct number_option *o = &number_options[k];
+        if (!is_option(a, o->name))
+            continue;
+        if (!(v = option_value(argc, argv, i, o->name)) || !store_number(o, v, out)) {
+            char fmt[128];
+            snprintf(fmt, sizeof fmt, "bad %s '%%s': expected %s", o->name, o->expected);
+            *rc = usage_error(desc, fmt, v ? v : "");
+        }
+        return true;
+    }
+    return false;
+}
+
+/* `value` when it is one of `choices`; otherwise a message that lists them. */
+static int parse_choice(const cli_desc *desc, const char *what, const char *value, const char *const *choices,
+                        const char **out)
+{
+    if (value && cli_choice_index(choices, value) >= 0) {
+        *out = value;
+        return EXIT_CODE_OK;
+    }
+    char fmt[400];
+    int n = snprintf(fmt, sizeof fmt, "unknown %s '%%s' (one of:", what);
+    for (int k = 0; choices[k] && n > 0 && n < (int)sizeof fmt - 64; k++)
+        n += snprintf(fmt + n, sizeof fmt - (size_t)n, " %s", choices[k]);
+    snprintf(fmt + n, sizeof fmt - (size_t)n, ")");
+    return usage_error(desc, fmt, value ? value : "");
+}
+
+/* --NAME VALUE of the chapter's own options. */
+static int parse_extra(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
+{
+    const char *a = argv[*i], *v;
+    for (int k = 0; k < CLI_MAX_EXTRAS && desc->extras[k].name; k++) {
+        char opt[80];
+        snprintf(opt, sizeof opt, "--%s", desc->extras[k].name);
+        if (!is_option(a, opt))
+            continue;
+        if (!(v = option_value(argc, argv, i, opt)))
+            return usage_error(desc, "%s needs a value", opt);
+        if (!desc->extras[k].choices) {
+            out->extra_values[k] = v;
+            return EXIT_CODE_OK;
+        }
+        char what[90];
+        snprintf(what, sizeof what, "%s value", opt);
+        return parse_choice(desc, what, v, desc->extras[k].choices, &out->extra_values[k]);
+    }
+    return usage_error(desc, "unknown option '%s'", a);
+}
+
+/* --headless[=egl|osmesa]; returns false when argv[i] is not one. */
+static bool parse_headless(const char *a, cli_options *out)
+{
+    if (strcmp(a, "--headless") == 0 || strcmp(a, "--headless=egl") == 0)
+        out->backend = BACKEND_EGL;
+    else if (strcmp(a, "--headless=osmesa") == 0)
+        out->backend = BACKEND_OSMESA;
+    else
+        return false;
+    out->headless = true;
+    return true;
+}
+
+/* A file name, a renderer or a view. */
+static int parse_text_option(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
+{
+    const char *a = argv[*i], *v;
+    static const struct {
+        const char *name;
+        size_t offset;
+    } paths[] = {{"--screenshot", offsetof(cli_options, screenshot)},
+                 {"--scene", offsetof(cli_options, scene_path)},
+                 {"--data-dir", offsetof(cli_options, data_dir)},
+                 {"--script", offsetof(cli_options, script)}};
+    for (int k = 0; k < COUNT(paths); k++) {
+        if (!is_option(a, paths[k].name))
+            continue;
+        if (!(v = option_value(argc, argv, i, paths[k].name)) || !*v)
+            return usage_error(desc, "%s needs a file name", paths[k].name);
+        *(const char **)(void *)((char *)out + paths[k].offset) = v;
+        return EXIT_CODE_OK;
+    }
+    if (is_option(a, "--camera")) {
+        if (!(out->camera = option_value(argc, argv, i, "--camera")) || !*out->camera)
+            return usage_error(desc, "%s needs a pose, e.g. \"eye 0 2 6 target 0 0 0\"", "--camera");
+        return EXIT_CODE_OK;
+    }
+    if (is_option(a, "--falloff")) {
+        static const char *const falloffs[] = {"hard", "windowed", NULL};
+        return parse_choice(desc, "falloff", option_value(argc, argv, i, "--falloff"), falloffs, &out->falloff);
+    }
+    if (is_option(a, "--gbuffer"))
+        return parse_choice(desc, "G-buffer layout", option_value(argc, argv, i, "--gbuffer"),
+                            gbuffer_layout_names, &out->gbuffer);
+    if (is_option(a, "--compare")) {
+        static const char *const modes[] = {"off", "split", "difference", NULL};
+        return parse_choice(desc, "compare mode", option_value(argc, argv, i, "--compare"), modes, &out->compare);
+    }
+    if (is_option(a, "--renderer")) {
+        if (!desc->renderers)
+            return usage_error(desc, "%s has a single renderer: --renderer is not available", desc->program);
+        v = option_value(argc, argv, i, "--renderer");
+        return parse_choice(desc, "renderer", v, desc->renderers, &out->renderer);
+    }
+    if (is_option(a, "--view")) {
+        if (!desc->views)
+            return usage_error(desc, "%s has no views: --view is not available", desc->program);
+        v = option_value(argc, argv, i, "--view");
+        return parse_choice(desc, "view", v, desc->views, &out->view);
+    }
+    return parse_extra(argc, argv, i, desc, out);
+}
+
+/* One argument (and its value): an exit code, EXIT_CODE_OK to go on. */
+static int parse_argument(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
+{
+    const char *a = argv[*i], *v;
+    int rc = EXIT_CODE_OK;
+    if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+        cli_print_help(desc, stdout);
+        return CLI_PARSE_DONE;
+    }
+    if (parse_headless(a, out) || parse_table_option(argc, argv, i, desc, out, &rc))
+        return rc;
+    if (strncmp(a, "--headless=", 11) == 0)
+        return usage_error(desc, "unknown headless backend '%s' (egl or osmesa)", a + 11);
+    if (is_option(a, "--size")) {
+        if (!(v = option_value(argc, argv, i, "--size")))
+            return usage_error(desc, "%s needs a value WxH", a);
+        if (!parse_size(v, &out->width, &out->height))
+            return usage_error(desc, "bad --size '%s': expected WxH, each 1..65536", v);
+        return EXIT_CODE_OK;
+    }
+    if (strncmp(a, "--", 2) == 0)
+        return parse_text_option(argc, argv, i, desc, out);
+    return usage_error(desc, "unexpected argument '%s'", a);
+}
+
+int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
+{
+    set_defaults(desc, out);
+    for (int i = 1; i < argc; i++) {
+        int rc = parse_argument(argc, argv, &i, desc, out);
+        if (rc != EXIT_CODE_OK)
+            return rc;
+    }
+    if (out->frames < 0)
+        out->frames = out->bench ? 10 : out->headless ? 1 : 0;
+    if (out->resize_cycle > 0 && out->bench)
+        return usage_error(desc, "%s changes the size between timed frames: not with --bench",
+                           "--resize-cycle");
+    if (out->minimise_cycle > 0 && out->headless)
+        return usage_error(desc, "%s minimises the window: not with --headless", "--minimise-cycle");
+    if ((out->script || out->overlay || (out->compare && strcmp(out->compare, "off") != 0)) && out->bench)
+        return usage_error(desc, "%s draws more than the chapter's frame: not with --bench",
+                           out->script ? "--script" : out->overlay ? "--overlay" : "--compare");
+    if (out->minimise_cycle > 0 && out->bench)
+        return usage_error(desc, "%s stops the frames it would time: not with --bench", "--minimise-cycle");
+    return EXIT_CODE_OK;
+}

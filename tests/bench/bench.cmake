@@ -1,0 +1,20 @@
+# The forward-vs-deferred benchmark (tools/bench.c, docs/compare.md).
+# Its helpers live in tools/bench/ so the tools/*.c glob does not make them separate programs.
+target_sources(bench PRIVATE
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_error.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_gbuffer.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_gbuffer_report.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_measure.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_options.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_plots.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_renderers.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_report.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_run.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_state.c)
+
+# --quick runs a small sweep; the check is on the output's shape (columns, rows, finite numbers,
+# files), never on timings, which depend on the machine.
+add_test(NAME bench.quick
+  COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_quick.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-quick
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(bench.quick PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 60)

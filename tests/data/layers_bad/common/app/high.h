@@ -1,0 +1,2 @@
+/* high.h - an app header including one below it: allowed. */
+#include "low.h"

@@ -1,0 +1,1 @@
+/* stray.h - in a folder that is no layer. */

@@ -1,0 +1,58 @@
+# Fuzzing the parsers the course owns: the scene format (scene_parse_string) and the command line
+# (cli_parse). Targets and seeds live in tests/fuzz/; see docs/testing.md.
+#
+#   fuzz.replay.scene / fuzz.replay.cli (label unit): the seeds and every saved crash in
+#       tests/fuzz/regressions/ replayed through the target with this tree's compiler (and its
+#       sanitizers, in the asan tree).
+#   fuzz.scene / fuzz.cli (label fuzz): a short libFuzzer run, compiled with clang by run_fuzz.sh,
+#       when clang is installed.
+#   COURSE_FUZZ=ON with clang (preset `fuzz`): build/bin/fuzz_scene and fuzz_cli for long runs.
+set(COURSE_FUZZ_TARGETS scene cli)
+set(COURSE_FUZZ_SECONDS_scene 20)
+set(COURSE_FUZZ_SECONDS_cli 6)
+
+foreach(target ${COURSE_FUZZ_TARGETS})
+  add_executable(fuzz_${target}_replay ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c
+                 ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/replay_main.c)
+  target_link_libraries(fuzz_${target}_replay PRIVATE common_core)
+  set_target_properties(fuzz_${target}_replay PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+  add_test(NAME fuzz.replay.${target}
+    COMMAND fuzz_${target}_replay ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus_${target}
+            ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/regressions/${target})
+  set_tests_properties(fuzz.replay.${target} PROPERTIES LABELS unit)
+endforeach()
+
+if(COURSE_FUZZ)
+  if(NOT CMAKE_C_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "COURSE_FUZZ=ON needs clang: configure with -DCMAKE_C_COMPILER=clang (preset fuzz)")
+  endif()
+  # The parser is compiled into the target (not linked from common_core) so that it carries
+  # libFuzzer's coverage instrumentation too.
+  set(COURSE_FUZZ_SOURCES_scene ${CMAKE_SOURCE_DIR}/common/scene/scene.c ${CMAKE_SOURCE_DIR}/common/scene/scene_parser.c
+    ${CMAKE_SOURCE_DIR}/common/scene/scene_directives.c ${CMAKE_SOURCE_DIR}/common/scene/scene_lights.c
+    ${CMAKE_SOURCE_DIR}/common/base/log.c)
+  set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/platform/cli.c ${CMAKE_SOURCE_DIR}/common/base/gbuffer_layout_names.c
+    ${CMAKE_SOURCE_DIR}/common/platform/keys.c
+    ${CMAKE_SOURCE_DIR}/common/base/log.c)
+  foreach(target ${COURSE_FUZZ_TARGETS})
+    add_executable(fuzz_${target} ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c
+                   ${COURSE_FUZZ_SOURCES_${target}})
+    target_include_directories(fuzz_${target} PRIVATE ${COMMON_INCLUDE_DIRS})
+    target_link_libraries(fuzz_${target} PRIVATE PkgConfig::CGLM m)
+    target_compile_options(fuzz_${target} PRIVATE -fsanitize=fuzzer,address,undefined
+                           -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
+    target_link_options(fuzz_${target} PRIVATE -fsanitize=fuzzer,address,undefined)
+  endforeach()
+endif()
+
+find_program(COURSE_CLANG clang)
+if(COURSE_CLANG)
+  foreach(target ${COURSE_FUZZ_TARGETS})
+    add_test(NAME fuzz.${target}
+      COMMAND ${BASH} ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/run_fuzz.sh ${CMAKE_SOURCE_DIR} ${target}
+              ${COURSE_FUZZ_SECONDS_${target}} ${CMAKE_BINARY_DIR}/test-out/fuzz-${target})
+    # A high COST makes ctest start the long runs first, beside the short tests, not after them.
+    set_tests_properties(fuzz.${target} PROPERTIES LABELS fuzz SKIP_RETURN_CODE 77 COST 1000
+      ENVIRONMENT "FUZZ_CC=${COURSE_CLANG}")
+  endforeach()
+endif()
