@@ -2,11 +2,15 @@
  * targets at once (multiple render targets, `layout(location = N) out` in shaders/gbuffer.frag).
  *
  * What goes in is only what the shading model reads later (common/render/gbuffer.h has the layout):
- * albedo in sRGB8, an octahedral normal in two half floats beside specular and shininess, and
+ * albedo in sRGB8, an octahedral normal in 2 x 12 bits beside specular and shininess, and
  * depth, from which the lighting pass rebuilds the position. Each target can be looked at
  * (--view or key V): the pictures every deferred tutorial shows. `final` lights the G-buffer
  * with chapter 03's pass, so you can check nothing was lost. Compare with chapter 01 (one
  * colour target) and read docs/02_mrt_gbuffer.md alongside.
+ *
+ * New here, in mrt_create: two colour textures and a depth texture in one framebuffer, and
+ * glDrawBuffers sending fragment output N to colour attachment N. From chapter 03 on the same
+ * targets come from gbuffer_create (common/render/gbuffer.c, through common/gl/fbo.c).
  */
 #include "app.h"
 #include "chapters.h"
@@ -47,9 +51,58 @@ static void report_size(int width, int height)
              GBUFFER_NAIVE_BYTES, GBUFFER_NAIVE_BYTES * pixels * mib, naive32, naive32 * pixels * mib);
 }
 
+/* One G-buffer texture: storage only, NEAREST (read texel for pixel, and without mipmaps). Any
+ * client format and type will do without data, as long as a depth format gets a depth one. */
+static GLuint target_texture(GLenum internal, GLenum format, GLenum type, int width, int height)
+{
+    GLuint t = gl_texture_create();
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)internal, width, height, 0, format, type, NULL);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+/* The G-buffer's framebuffer: the layout's formats (--gbuffer; common/render/gbuffer.c lists them). */
+static bool mrt_create(int width, int height)
+{
+    const gbuffer_layout *l = state.gbuf.desc.layout;
+    const GLenum depth = gbuffer_layout_depth_format(l, false);
+    const bool stencil = depth == GL_DEPTH24_STENCIL8;
+    fbo *f = &state.gbuf.fbo;
+    fbo_destroy(f);
+    *f = (fbo){.color_count = 2, .owns_depth = true, .width = width, .height = height, .samples = 1};
+
+    /* 1. RT0 albedo (GL_SRGB8_ALPHA8: 8 bits on the sRGB curve), RT1 the octahedral normal,
+     *    specular and shininess (GL_RGBA8; half floats in the reference layout) */
+    f->color[0] = target_texture(l->albedo_format, GL_RGBA, GL_FLOAT, width, height);
+    f->color[1] = target_texture(l->normal_format, GL_RGBA, GL_FLOAT, width, height);
+    /* 2. depth as a texture, not chapter 01's renderbuffer: the lighting pass reads it back */
+    f->depth = stencil ? target_texture(depth, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, width, height)
+                       : target_texture(depth, GL_DEPTH_COMPONENT, GL_FLOAT, width, height);
+
+    /* 3. one framebuffer holds all three; glDrawBuffers routes `layout(location = N) out` to
+     *    colour attachment N (without it only attachment 0 would be written) */
+    f->id = gl_framebuffer_create();
+    glBindFramebuffer(GL_FRAMEBUFFER, f->id);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, f->color[0], 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, f->color[1], 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                           GL_TEXTURE_2D, f->depth, 0);
+    static const GLenum outputs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, outputs);
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        log_error("G-buffer framebuffer %dx%d: %s", width, height, fbo_status_name(status));
+    return status == GL_FRAMEBUFFER_COMPLETE && gl_check("mrt_create");
+}
+
 static bool init(app *a)
 {
-    if (!gbuffer_create(&state.gbuf, a->width, a->height) || !deferred_fullscreen_create(&state.lighting, NULL))
+    if (!gbuffer_create_pass(&state.gbuf, NULL) || !mrt_create(a->width, a->height) ||
+        !deferred_fullscreen_create(&state.lighting, NULL))
         return false;
     state.view_program = gl_program_load("fullscreen.vert", "gbuffer_view.frag", NULL);
     if (!state.view_program)
@@ -63,7 +116,7 @@ static bool init(app *a)
 static bool resize(app *a)
 {
     report_size(a->width, a->height);
-    return gbuffer_resize(&state.gbuf, a->width, a->height);
+    return mrt_create(a->width, a->height);
 }
 
 /* Draws one target of the G-buffer as a picture, with a full-screen triangle. */

@@ -213,6 +213,15 @@ bool gbuffer_create(gbuffer *g, int width, int height) { return gbuffer_create_w
 
 bool gbuffer_create_with(gbuffer *g, int width, int height, const gbuffer_desc *desc)
 {
+    if (!gbuffer_create_pass(g, desc) || !make_targets(g, width, height)) {
+        gbuffer_destroy(g);
+        return false;
+    }
+    return gl_check("gbuffer_create");
+}
+
+bool gbuffer_create_pass(gbuffer *g, const gbuffer_desc *desc)
+{
     memset(g, 0, sizeof *g);
     if (desc)
         g->desc = *desc;
@@ -224,11 +233,7 @@ bool gbuffer_create_with(gbuffer *g, int width, int height, const gbuffer_desc *
     char defines[64];
     snprintf(defines, sizeof defines, "GBUFFER_NORMAL %d", g->desc.layout->normal_encoding);
     g->program = gl_program_load("forward.vert", "gbuffer.frag", defines);
-    if (!g->program || !make_targets(g, width, height)) {
-        gbuffer_destroy(g);
-        return false;
-    }
-    return gl_check("gbuffer_create");
+    return g->program != 0;
 }
 
 bool gbuffer_resize(gbuffer *g, int width, int height)

@@ -4,6 +4,9 @@
  *                                        default layout
  *   gbuffer_create_with(g, width, height, desc)
  *                                        the same with options (desc may be NULL: the defaults)
+ *   gbuffer_create_pass(g, desc)         the geometry-pass program and the options only: the caller
+ *                                        makes g->fbo itself (chapter 02 shows what MRT takes) with
+ *                                        the layout's formats, colour 0 and 1 drawn, and a depth texture
  *   gbuffer_attach_stencil(g, framebuffer)
  *                                        attach g's stencil to `framebuffer` (one that borrows g's
  *                                        depth texture, like the light accumulation buffer), so a
@@ -146,6 +149,7 @@ typedef struct gbuffer {
 
 bool gbuffer_create(gbuffer *g, int width, int height);
 bool gbuffer_create_with(gbuffer *g, int width, int height, const gbuffer_desc *desc);
+bool gbuffer_create_pass(gbuffer *g, const gbuffer_desc *desc);
 void gbuffer_attach_stencil(const gbuffer *g, GLuint framebuffer);
 bool gbuffer_follow_target(const gbuffer *g, fbo *target, GLenum format, const char *name);
 bool gbuffer_resize(gbuffer *g, int width, int height);

@@ -33,6 +33,12 @@ function(chapters_01_03_tests)
   if(TARGET 02_mrt_gbuffer AND TARGET 03_fullscreen_phong)
     # Chapter 02's `final` view is chapter 03's lighting pass on the same G-buffer: exact.
     course_agreement_test(02_final_vs_03 0 0 02_mrt_gbuffer --view final VS 03_fullscreen_phong)
+    # Chapter 02 makes its framebuffer by hand (mrt_create); in every layout it is gbuffer_create's:
+    # the same picture to the byte.
+    foreach(layout reference compact-d24s8 reversed-z linear-albedo oct8 oct16)
+      course_agreement_test(02_final_vs_03_${layout} 0 0 02_mrt_gbuffer --view final --gbuffer ${layout}
+                            VS 03_fullscreen_phong --gbuffer ${layout})
+    endforeach()
   endif()
 endfunction()
 chapters_01_03_tests()

@@ -48,6 +48,7 @@ expect_first "clusters_shade_glass" 12_transparency.c
 expect_first "CLUSTERS_VIEW_LINEAR" 11_clustered.c # the benchmark asks 11 for linear radiance (app.h: linear_output)
 expect_first "GPU_SCENE_BACK_TO_FRONT" 12_transparency.c
 expect_first "glCheckFramebufferStatus" 01_fbo_setup.c
+expect_first "glDrawBuffers" 02_mrt_gbuffer.c
 # No lesson behind a flag in common/: the old option structs are gone.
 if grep -n "light_volumes_options\|overwrite\b" "$root"/common/*.[ch]; then
   echo "FAIL a chapter's lesson is selected by an option in common/"
