@@ -7,8 +7,8 @@
  * slice.
  *
  * Taken over: the G-buffer pass (02), shade_light() with its spots (00, 09), the depth pre-pass and
- * GL_EQUAL from chapter 00, the heat map (03). New here (common/clusters/cluster_grid.c, common/clusters/clusters.c,
- * shaders/clusters.glsl):
+ * GL_EQUAL from chapter 00, the heat map (03). New here, the passes below (their math and buffers in
+ * common/clusters/, the shaders in shaders/clusters.glsl and cluster_assign.comp):
  *   the grid: 32 x 32-pixel tiles times S slices; slice k holds view depths
  *     near * (far / near)^(k / S) .. near * (far / near)^((k + 1) / S), S chosen so that a cluster is
  *     about as deep as it is tall (175 on the default scene at 800 x 800)
@@ -28,7 +28,9 @@
 #include "app.h"
 #include "chapters.h"
 #include "clusters.h"
+#include "frame_timer.h"
 #include "gbuffer.h"
+#include "gl_util.h"
 
 #include <string.h>
 
@@ -64,6 +66,10 @@ static const cli_desc cli = {
 /* Clustered deferred: every pixel written once; no blending, no depth test, nothing culled. */
 static const gl_pass_state deferred_pass = {.depth_write = false};
 
+/* Forward+: chapter 00's two passes. The pre-pass writes the nearest depth (GL_LEQUAL: on a tie the
+ * object drawn last wins, as in the G-buffer); then only the fragment that wrote it is shaded. */
+static const gl_pass_state prepass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
+const gl_pass_state chapter_11_shade_after_prepass = {.cull = GL_BACK, .depth_func = GL_EQUAL};
 
 static struct {
     gbuffer g;
@@ -110,24 +116,145 @@ static clusters_view view_of(const app *a)
                                         : CLUSTERS_VIEW_LIT;
 }
 
+/* The most entries a list holds: the texture buffer must address every cluster's (and --cluster-lights). */
+static int list_limit(const clusters *c)
+{
+    GLint max_texels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+    int limit = max_texels / cluster_grid_count(&c->grid);
+    if (c->desc.cluster_limit > 0 && c->desc.cluster_limit < limit)
+        limit = c->desc.cluster_limit;
+    return limit > 0 ? limit : 1;
+}
+
+/* The compute path: the CPU's candidates (per slice and tile row, the lights that may reach it), then
+ * three passes over the rows, each reading what the one before wrote to its storage buffers. */
+static bool assign_compute(clusters *c, int lights, int limit)
+{
+    const cluster_assign_buffers out = {c->range_buffer, c->range_texture, c->list_buffer, c->list_texture};
+    cluster_assign_gpu *gpu = &c->gpu;
+    if (!cluster_assign_gpu_prepare(gpu, &c->grid, (const float(*)[4])c->spheres, lights, limit, &out))
+        return false;
+    cluster_assign_gpu_use(gpu, CLUSTER_ASSIGN_COUNT); /* each row counts its clusters' lights */
+    glDispatchCompute(gpu->groups, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    cluster_assign_gpu_use(gpu, CLUSTER_ASSIGN_SCAN); /* one workgroup: where each row's entries begin */
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    cluster_assign_gpu_use(gpu, CLUSTER_ASSIGN_FILL); /* each row writes its (first, count) and lists */
+    glDispatchCompute(gpu->groups, 1, 1);
+    /* the shading passes fetch both as texture buffers (and --assign check reads them back) */
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    cluster_assign_gpu_finish();
+    return gl_check("11 light assignment");
+}
+
+/* 2. light assignment: the grid for this view, each light's bounding sphere in view space, the lists. */
+bool chapter_11_assign(clusters *c, const gpu_scene *gs)
+{
+    frame_timer_mark("light assignment");
+    const frame_view *v = &gs->view;
+    /* tile_size-pixel tiles times the slices (cubic clusters unless --slices), near to far */
+    cluster_grid_init(&c->grid, v->width, v->height, c->desc.tile_size, c->desc.slices, (const float *)v->proj,
+                      v->near_plane, v->far_plane);
+    int limit = list_limit(c);
+    if (!clusters_light_spheres(c, gs))
+        return false;
+    if (c->desc.compute)
+        return assign_compute(c, gs->light_count, limit) &&
+               (!c->desc.check || clusters_check(c, gs->light_count, limit));
+    if (!cluster_lists_assign(&c->lists, &c->grid, (const float(*)[4])c->spheres, gs->light_count, limit))
+        return false;
+    clusters_upload_lists(c); /* the CPU's lists, into the same two buffers */
+    return gl_check("11 light assignment");
+}
+
+/* 3. clustered deferred: one full-screen triangle; each pixel reads the G-buffer once and loops over
+ * its cluster's list (clustered_deferred.frag). */
+bool chapter_11_shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *gs, const gl_pass_state *pass,
+                               clusters_view view)
+{
+    GLuint p = clusters_program(c, CLUSTERS_PROGRAM_DEFERRED);
+    if (!p)
+        return false;
+    if (view != CLUSTERS_VIEW_COUNT) /* the count names its own pass */
+        frame_timer_mark("lighting");
+    gl_pass_state_apply(pass);
+    clusters_use(c, gs, p, view);
+    gbuffer_bind_textures(g, gs, p, SHADER_UNIT_GBUFFER);
+    gl_draw_fullscreen();
+    return gl_check("11 clustered deferred shading");
+}
+
+/* 3. Forward+: every opaque object once; after the pre-pass only the visible fragment passes
+ * (forward_plus.frag finds its cluster from gl_FragCoord and its view depth). */
+bool chapter_11_shade_forward(clusters *c, const gpu_scene *gs, const gl_pass_state *pass, clusters_view view)
+{
+    GLuint p = clusters_program(c, CLUSTERS_PROGRAM_FORWARD);
+    if (!p)
+        return false;
+    if (view != CLUSTERS_VIEW_COUNT)
+        frame_timer_mark("shading");
+    gl_pass_state_apply(pass);
+    clusters_use(c, gs, p, view);
+    gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS);
+    gpu_scene_draw(gs, p);
+    return gl_check("11 Forward+ shading");
+}
+
+/* The light-loop iterations, exactly as the shading pass ran them: the same shader in its count view
+ * (g NULL: Forward+, which draws its own pre-pass there). */
+static bool count_evaluations(clusters *c, const gbuffer *g, const gpu_scene *gs)
+{
+    if (!clusters_count_begin(c, gs))
+        return false;
+    bool drawn = g ? chapter_11_shade_deferred(c, g, gs, &(gl_pass_state){0}, CLUSTERS_VIEW_COUNT)
+                   : clusters_draw_depth(c, gs) &&
+                         chapter_11_shade_forward(c, gs, &chapter_11_shade_after_prepass, CLUSTERS_VIEW_COUNT);
+    return clusters_count_end(c, drawn);
+}
+
+static bool count_forward_plus(clusters *c, const gpu_scene *gs) { return count_evaluations(c, NULL, gs); }
+
+/* Forward+: 1. depth pre-pass into target (cleared); 2. light assignment. */
+static bool forward_plus_prepass(clusters *c, const gpu_scene *gs, GLuint target)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, gs->view.width, gs->view.height);
+    gl_pass_state_apply(&prepass);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    frame_timer_mark("depth pre-pass");
+    return clusters_draw_depth(c, gs) && chapter_11_assign(c, gs);
+}
+
+/* 3. every object shaded once, GL_EQUAL: only the fragment the pre-pass kept. */
+static bool forward_plus_shade(clusters *c, const gpu_scene *gs, clusters_view view)
+{
+    return chapter_11_shade_forward(c, gs, &chapter_11_shade_after_prepass, view);
+}
+
+const app_forward_plus chapter_11_forward_plus = {
+    .prepass = forward_plus_prepass, .shade = forward_plus_shade, .count = count_forward_plus};
+
 /* Clustered deferred: 1. geometry pass; 2. light assignment; 3. one full-screen shading pass. */
 static bool frame_deferred(app *a)
 {
-    if (!gbuffer_render(&state.g, &a->gs) || !clusters_assign(&state.c, &a->gs))
+    if (!gbuffer_render(&state.g, &a->gs) || !chapter_11_assign(&state.c, &a->gs))
         return false;
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
-    bool ok = clusters_shade_deferred(&state.c, &state.g, &a->gs, &deferred_pass, view_of(a));
+    bool ok = chapter_11_shade_deferred(&state.c, &state.g, &a->gs, &deferred_pass, view_of(a));
     gl_pass_state_reset();
-    return ok && (!a->count_pixels || clusters_count(&state.c, &state.g, &a->gs));
+    return ok && (!a->count_pixels || count_evaluations(&state.c, &state.g, &a->gs));
 }
 
-/* Forward+: 1. depth pre-pass; 2. light assignment; 3. every object shaded once, GL_EQUAL. Written
- * in common/clusters/clusters.c (clusters_render_forward_plus), since every chapter offers Forward+. */
+/* Forward+: 1. depth pre-pass; 2. light assignment; 3. every object shaded once, GL_EQUAL. */
 static bool frame_forward_plus(app *a)
 {
-    return clusters_render_forward_plus(&state.c, NULL, &a->gs, a->target.id, view_of(a)) &&
-           (!a->count_pixels || clusters_count(&state.c, NULL, &a->gs));
+    bool ok = forward_plus_prepass(&state.c, &a->gs, a->target.id) && forward_plus_shade(&state.c, &a->gs, view_of(a));
+    gl_pass_state_reset();
+    return ok && (!a->count_pixels || count_evaluations(&state.c, NULL, &a->gs));
 }
 
 static bool frame(app *a)
@@ -135,7 +262,7 @@ static bool frame(app *a)
     if (app_renderer_is(a, "forward"))
         return app_render_forward(a);
     bool deferred = app_renderer_is(a, "deferred");
-    a->pass_state = deferred ? &deferred_pass : &clusters_shade_after_prepass;
+    a->pass_state = deferred ? &deferred_pass : &chapter_11_shade_after_prepass;
     if (!(deferred ? frame_deferred(a) : frame_forward_plus(a)))
         return false;
     a->linear_written = a->linear_output;

@@ -141,7 +141,7 @@ static bool frame(app *a)
         return app_render_forward(a);
 
     /* 1. geometry pass: the opaque objects only, and their depth; 2. light assignment (chapter 11) */
-    if (!gbuffer_render(&state.g, &a->gs) || !clusters_assign(&state.c, &a->gs))
+    if (!gbuffer_render(&state.g, &a->gs) || !chapter_11_assign(&state.c, &a->gs))
         return false;
     if (app_view_is(a, "overdraw"))
         return draw_overdraw(a);
@@ -151,7 +151,7 @@ static bool frame(app *a)
         return false;
     glBindFramebuffer(GL_FRAMEBUFFER, state.accum.id);
     glViewport(0, 0, state.accum.width, state.accum.height);
-    if (!clusters_shade_deferred(&state.c, &state.g, &a->gs, &lighting_pass, CLUSTERS_VIEW_LINEAR))
+    if (!chapter_11_shade_deferred(&state.c, &state.g, &a->gs, &lighting_pass, CLUSTERS_VIEW_LINEAR))
         return false;
     gl_pass_state_reset();
 

@@ -166,7 +166,7 @@ static void draw_shade_pass(const app *a, int pass, const gl_pass_state *s)
 /* Deferred: 1. geometry; 2. clusters; 3. edges; 4. pixels; 5. edge samples, averaged (the resolve). */
 static bool frame_deferred(app *a)
 {
-    if (!gbuffer_render(&state.g, &a->gs) || !clusters_assign(&state.c, &a->gs))
+    if (!gbuffer_render(&state.g, &a->gs) || !chapter_11_assign(&state.c, &a->gs))
         return false;
     glBindFramebuffer(GL_FRAMEBUFFER, state.lit.id);
     glViewport(0, 0, a->width, a->height);
@@ -207,8 +207,8 @@ static bool frame_forward(app *a, bool plus, bool timed)
         glClearColor(0, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         frame_timer_mark("depth pre-pass");
-        ok = clusters_draw_depth(&state.c, &a->gs) && clusters_assign(&state.c, &a->gs) &&
-             clusters_shade_forward(&state.c, &a->gs, &shade_after_prepass, CLUSTERS_VIEW_LINEAR);
+        ok = clusters_draw_depth(&state.c, &a->gs) && chapter_11_assign(&state.c, &a->gs) &&
+             chapter_11_shade_forward(&state.c, &a->gs, &shade_after_prepass, CLUSTERS_VIEW_LINEAR);
         gl_pass_state_reset();
     }
     if (!ok)

@@ -3,11 +3,16 @@
  * own program, and without its main() into the library the benchmark and the tests link, which run
  * the chapters in-process through common/app/app_embed.h. The renderers the benchmark compares are
  * chapters with arguments: chapters/course_renderers.h.
+ *
+ * A chapter whose stage a later one builds on exports it here, so that it is written once, in the
+ * chapter that teaches it: chapter 07's frame with any G-buffer layout, and chapter 11's clustered
+ * passes (chapters 12 and 13 call them, and every chapter's Forward+ through the runner).
  */
 #ifndef CHAPTERS_CHAPTERS_H
 #define CHAPTERS_CHAPTERS_H
 
 #include "app.h"
+#include "clusters.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
 
@@ -19,5 +24,34 @@ extern const app_desc chapter_00, chapter_01, chapter_02, chapter_03, chapter_04
  * volume state is the chapter's), presented into target. */
 bool chapter_07_draw_with(gbuffer *g, deferred_volumes *dv, const gpu_scene *gs, GLuint target,
                           deferred_volumes_frame how);
+
+/* Chapter 11's passes (chapters/11_clustered.c explains them):
+ *   chapter_11_assign(c, gs)            the grid for gs's view and every cluster's light list, on the
+ *                                       CPU or by compute shaders (c->desc)
+ *   chapter_11_shade_deferred(c, g, gs, pass, view)
+ *                                       one full-screen pass reading g, into the framebuffer bound
+ *   chapter_11_shade_forward(c, gs, pass, view)
+ *                                       every opaque object shaded once, after the depth pre-pass
+ *   chapter_11_forward_plus             Forward+'s frame and count, as the runner draws it
+ * and the state of Forward+'s shading after its pre-pass (GL_EQUAL). */
+bool chapter_11_assign(clusters *c, const gpu_scene *gs);
+bool chapter_11_shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *gs, const gl_pass_state *pass,
+                               clusters_view view);
+bool chapter_11_shade_forward(clusters *c, const gpu_scene *gs, const gl_pass_state *pass, clusters_view view);
+extern const app_forward_plus chapter_11_forward_plus;
+extern const gl_pass_state chapter_11_shade_after_prepass;
+
+/* The last line of a chapter: its main(), which hands the runner chapter 11's Forward+ (every chapter
+ * offers it) and the chapter; nothing when compiled for the embedding library. */
+#ifdef CHAPTER_NO_MAIN
+#define CHAPTER_MAIN(desc)
+#else
+#define CHAPTER_MAIN(desc)                                                                                    \
+    int main(int argc, char **argv)                                                                           \
+    {                                                                                                         \
+        app_forward_set_plus(&chapter_11_forward_plus);                                                       \
+        return app_run(&(desc), argc, argv);                                                                  \
+    }
+#endif
 
 #endif

@@ -43,6 +43,7 @@ app_embed *course_set_embed(course_set *set, int r, const gpu_scene *gs)
     while (course_renderers[first].chapter != course_renderers[r].chapter)
         first++;
     app_embed **e = &set->open[first];
+    app_forward_set_plus(&chapter_11_forward_plus); /* as CHAPTER_MAIN does */
     if (!*e && !app_embed_open(course_renderers[r].chapter, course_renderers[r].args, gs, e))
         return NULL;
     if (set->chosen[first] != r && !app_embed_choose(*e, course_renderers[r].args))

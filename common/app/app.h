@@ -25,9 +25,9 @@
  *                               saying so, and `compute` stays false
  *
  * A chapter exports an app_desc (its command-line description and six callbacks) named after it,
- * `chapter_NN`, and ends with CHAPTER_MAIN(chapter_NN): its main() when built as its own program,
- * nothing when the build compiles it again (CHAPTER_NO_MAIN) for the benchmark and the tests, which
- * drive it in-process (app_embed.h). Its frame callback draws the final, display-encoded picture
+ * `chapter_NN`, and ends with CHAPTER_MAIN(chapter_NN) (chapters/chapters.h): its main() when built
+ * as its own program, nothing when the build compiles it again (CHAPTER_NO_MAIN) for the benchmark
+ * and the tests, which drive it in-process (app_embed.h). Its frame callback draws the final, display-encoded picture
  * into a->target (RGBA8 colour + 32-bit float depth), which the runner shows in the window or saves
  * with --screenshot. When a->count_pixels (--bench, or the overlay is on) it counts its lighting
  * pass's fragments with a->query (gl_samples_begin/end) into a->shaded_pixels, and when each of them
@@ -84,14 +84,6 @@ typedef struct app_desc {
      * table's forward (chapter 13: forward MSAA at its own sample count) */
     bool (*draw_forward)(app *a, GLuint target);
 } app_desc;
-
-/* The last line of a chapter: its main() (nothing when compiled for the embedding library). */
-#ifdef CHAPTER_NO_MAIN
-#define CHAPTER_MAIN(desc)
-#else
-#define CHAPTER_MAIN(desc)                                                                                    \
-    int main(int argc, char **argv) { return app_run(&(desc), argc, argv); }
-#endif
 
 int app_run(const app_desc *desc, int argc, char **argv);
 bool app_render_forward(app *a);

@@ -1,7 +1,13 @@
 /* app_forward.c - see app_forward.h. */
 #include "app_forward.h"
 
+#include "log.h"
+
 #include <string.h>
+
+static const app_forward_plus *forward_plus; /* chapter 11's, set by CHAPTER_MAIN */
+
+void app_forward_set_plus(const app_forward_plus *plus) { forward_plus = plus; }
 
 bool app_forward_is(const char *name)
 {
@@ -29,18 +35,34 @@ static bool draw_variant(app_forward *f, const forward_options *variant, const g
     return true;
 }
 
-/* Chapter 11's Forward+, its lists made as the chapter makes them by default. */
+/* The opaque frame in linear radiance, then chapter 12's glass over it with the same lists. */
+static bool shade_forward_plus_glass(void *user, const gpu_scene *gs)
+{
+    app_forward *f = user;
+    return forward_plus->shade(&f->c, gs, CLUSTERS_VIEW_LINEAR) &&
+           clusters_shade_glass(&f->c, gs, forward_glass_passes, 2, GPU_SCENE_BACK_TO_FRONT, CLUSTERS_VIEW_LINEAR);
+}
+
+/* Chapter 11's Forward+, its lists made as the chapter makes them by default; a scene with glass
+ * blends it in linear radiance: straight into a float target, else through forward's linear frame. */
 static bool draw_forward_plus(app_forward *f, const gpu_scene *gs, GLuint target, app_forward_options o,
                               app_forward_work *out)
 {
+    if (!forward_plus) {
+        log_error("Forward+ is chapter 11's: this program did not link it (chapters/chapters.h)");
+        return false;
+    }
     const clusters_desc lists = {.compute = gl_have_compute()};
-    if (!f->have_clusters && !(f->have_clusters = clusters_create(&f->c, &lists)))
+    bool glass = gs->transparent_count > 0;
+    if ((!f->have_clusters && !(f->have_clusters = clusters_create(&f->c, &lists))) || (glass && !need_forward(f)))
         return false;
-    if (gs->transparent_count > 0 && !need_forward(f)) /* glass goes through forward's linear frame */
-        return false;
-    clusters_view view = o.linear_output ? CLUSTERS_VIEW_LINEAR : CLUSTERS_VIEW_LIT;
-    if (!clusters_render_forward_plus(&f->c, f->have_fwd ? &f->fwd : NULL, gs, target, view) ||
-        (o.count_pixels && !clusters_count(&f->c, NULL, gs)))
+    bool ok = forward_plus->prepass(&f->c, gs, target) &&
+              (!glass                ? forward_plus->shade(&f->c, gs, o.linear_output ? CLUSTERS_VIEW_LINEAR
+                                                                                  : CLUSTERS_VIEW_LIT)
+               : o.linear_output ? shade_forward_plus_glass(f, gs)
+                                 : forward_draw_linear(&f->fwd, gs, shade_forward_plus_glass, f));
+    gl_pass_state_reset();
+    if (!ok || (o.count_pixels && !forward_plus->count(&f->c, gs)))
         return false;
     out->shaded = o.count_pixels ? f->c.evaluations : -1;
     out->lights_per_pixel = 1.0; /* shaded counts the light-loop iterations */

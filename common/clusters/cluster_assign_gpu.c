@@ -8,8 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { PASS_COUNT, PASS_SCAN, PASS_FILL, GROUP_SIZE = 64 };
-static const char *const pass_defines[3] = {"PASS_COUNT 1", "PASS_SCAN 1", "PASS_FILL 1"};
+enum { GROUP_SIZE = 64 }; /* invocations per workgroup of the count and fill passes */
 
 bool cluster_assign_gpu_create(cluster_assign_gpu *a)
 {
@@ -23,7 +22,7 @@ bool cluster_assign_gpu_create(cluster_assign_gpu *a)
 
 void cluster_assign_gpu_destroy(cluster_assign_gpu *a)
 {
-    for (int i = 0; i < 3; i++)
+    for (int i = 0; i < CLUSTER_ASSIGN_PASSES; i++)
         gl_program_destroy(&a->programs[i]);
     GLuint *buffers[] = {&a->sphere_buffer, &a->candidate_buffer, &a->row_buffer,
                          &a->box_buffer,    &a->cursor_buffer,    &a->hit_buffer};
@@ -138,27 +137,21 @@ static long candidates_make(cluster_assign_gpu *a, const cluster_grid *g, const 
     return pairs;
 }
 
-static GLuint program(cluster_assign_gpu *a, int pass)
+static GLuint program(cluster_assign_gpu *a, cluster_assign_pass pass)
 {
+    static const char *const defines[CLUSTER_ASSIGN_PASSES] = {"PASS_COUNT 1", "PASS_SCAN 1", "PASS_FILL 1"};
     if (!a->programs[pass])
-        a->programs[pass] = gl_compute_program_load("cluster_assign.comp", pass_defines[pass]);
+        a->programs[pass] = gl_compute_program_load("cluster_assign.comp", defines[pass]);
     return a->programs[pass];
 }
 
-static void bind_grid(GLuint p, const cluster_grid *g, int cluster_limit)
-{
-    glUseProgram(p);
-    glUniform3i(glGetUniformLocation(p, "u_grid"), g->tiles_x, g->tiles_y, g->slices);
-    glUniform1i(glGetUniformLocation(p, "u_limit"), cluster_limit);
-}
-
-bool cluster_assign_gpu_run(cluster_assign_gpu *a, const cluster_grid *g, const float (*spheres)[4],
-                            int count, int cluster_limit, const cluster_assign_buffers *out)
+bool cluster_assign_gpu_prepare(cluster_assign_gpu *a, const cluster_grid *g, const float (*spheres)[4],
+                                int count, int cluster_limit, const cluster_assign_buffers *out)
 {
     int clusters = cluster_grid_count(g);
     long pairs = candidates_make(a, g, spheres, count);
-    if (pairs < 0 || !box_table(a, g) || !program(a, PASS_COUNT) || !program(a, PASS_SCAN) ||
-        !program(a, PASS_FILL))
+    if (pairs < 0 || !box_table(a, g) || !program(a, CLUSTER_ASSIGN_COUNT) || !program(a, CLUSTER_ASSIGN_SCAN) ||
+        !program(a, CLUSTER_ASSIGN_FILL))
         return false;
     /* No list is longer than the limit: the entries are at most min(pairs, clusters x limit). */
     long most = (long)clusters * cluster_limit < pairs ? (long)clusters * cluster_limit : pairs;
@@ -177,23 +170,24 @@ bool cluster_assign_gpu_run(cluster_assign_gpu *a, const cluster_grid *g, const 
                       out->range_buffer, out->list_buffer,    a->cursor_buffer, a->hit_buffer};
     for (GLuint i = 0; i < 8; i++)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, bound[i]);
-    GLuint groups = (GLuint)((buckets + GROUP_SIZE - 1) / GROUP_SIZE);
-    /* 1. each (slice, tile row) counts the lights of its clusters; 2. one workgroup finds where each
-     * row's entries begin; 3. each (slice, tile row) writes its clusters' (first, count) and lists. */
-    bind_grid(a->programs[PASS_COUNT], g, cluster_limit);
-    glDispatchCompute(groups, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    bind_grid(a->programs[PASS_SCAN], g, cluster_limit);
-    glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    bind_grid(a->programs[PASS_FILL], g, cluster_limit);
-    glDispatchCompute(groups, 1, 1);
-    /* The shading passes fetch both as texture buffers; the check reads them back. */
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    a->groups = (GLuint)((buckets + GROUP_SIZE - 1) / GROUP_SIZE);
+    a->grid = *g, a->limit = cluster_limit;
+    return gl_check("cluster_assign_gpu_prepare");
+}
+
+void cluster_assign_gpu_use(cluster_assign_gpu *a, cluster_assign_pass pass)
+{
+    GLuint p = a->programs[pass];
+    glUseProgram(p);
+    glUniform3i(glGetUniformLocation(p, "u_grid"), a->grid.tiles_x, a->grid.tiles_y, a->grid.slices);
+    glUniform1i(glGetUniformLocation(p, "u_limit"), a->limit);
+}
+
+void cluster_assign_gpu_finish(void)
+{
     for (GLuint i = 0; i < 8; i++)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    return gl_check("cluster_assign_gpu_run");
 }
 
 bool cluster_assign_gpu_read(const cluster_assign_buffers *out, int clusters, cluster_lists *l)

@@ -5,7 +5,7 @@
 #      every ideal pair everywhere measured (ratio >= 0.999: a missed pair would be a missing light).
 #      "Ideal" is counted exactly on the CPU from the depth buffer (common/render/light_work.c); the
 #      evaluations are the light-loop iterations, counted by the shading shader itself
-#      (clusters_count in common/clusters/clusters.c);
+#      (count_evaluations in chapters/11_clustered.c);
 #   2. both renderers read the same lists, so they loop about the same number of times: within 0.1 %
 #      (deferred finds a pixel's view depth from the G-buffer's depth, forward+ from the interpolated
 #      position: a few pixels at a slice boundary land in the other slice; measured 1 to 1,232 of 0.9

@@ -38,9 +38,10 @@ expect_first "tiled_cull.comp" 10_tiled_deferred.c
 expect_first "tile_depth_bounds.frag" 10_tiled_deferred.c
 expect_first "tiled_shade.frag" 10_tiled_deferred.c
 expect_first "tile_sphere_visible" 10_tiled_deferred.c
-expect_first "clusters_assign" 11_clustered.c
-expect_first "clusters_shade_deferred" 11_clustered.c
-expect_first "clusters_render_forward_plus" 11_clustered.c
+expect_first "chapter_11_assign" 11_clustered.c
+expect_first "CLUSTER_ASSIGN_FILL" 11_clustered.c
+expect_first "chapter_11_shade_deferred" 11_clustered.c
+expect_first "chapter_11_shade_forward" 11_clustered.c
 expect_first "GL_EQUAL" 00_forward.c
 expect_first "forward_draw_depth" 00_forward.c
 expect_first "GL_ONE_MINUS_SRC_ALPHA" 12_transparency.c
