@@ -1,4 +1,4 @@
-/* app.c - see app.h. The test hooks and the --bench line are in app_hooks.c. */
+/* app.c - see app.h. The test hooks are in app_hooks.c, the --bench line in app_bench.c. */
 #include "app.h"
 
 #include "app_internal.h"

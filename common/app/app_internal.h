@@ -1,5 +1,6 @@
 /* app_internal.h - the parts of app_run that are not the frame loop (app.c only).
  *
+ * The test hooks (app_hooks.c):
  *   app_hooks_init(h, opt)
  *   app_hooks_minimise(h, a, opt)              before a frame's events: one --minimise-cycle round;
  *                                              false: stop the loop (h->rc says why)
@@ -7,6 +8,7 @@
  *   app_hooks_after_frame(h, minimised)        counts frames drawn while minimised
  *   app_hooks_check(h, a, opt)                 the hooks' verdict after the loop: leaked GL
  *                                              objects, frames drawn while minimised; exit code
+ * The benchmark line (app_bench.c):
  *   app_bench_print(a, ms, pass_ms, n)         the one `bench: key=value ...` line of --bench: the
  *                                              frames' wall times (glFinish + monotonic) and the
  *                                              median of each pass on the timer's clock
