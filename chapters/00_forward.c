@@ -94,9 +94,7 @@ static bool frame(app *a)
     if (!forward_draw_shaded(&state.fwd, gs, shade))
         return false;
     a->shaded_pixels = forward_shaded_pixels(&state.fwd);
-    a->lights_per_pixel = o.light_lists && a->scene.object_count > 0
-                              ? (double)state.fwd.list_entries / a->scene.object_count
-                              : gs->light_count; /* each shaded fragment loops over these */
+    a->lights_per_pixel = forward_lights_per_pixel(&state.fwd, gs, o.light_lists);
     a->linear_written = a->linear_output;
     gl_pass_state_reset();
     return gl_check("00 frame");

@@ -69,7 +69,7 @@ static const gl_pass_state deferred_pass = {.depth_write = false};
 /* Forward+: chapter 00's two passes. The pre-pass writes the nearest depth (GL_LEQUAL: on a tie the
  * object drawn last wins, as in the G-buffer); then only the fragment that wrote it is shaded. */
 static const gl_pass_state prepass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
-const gl_pass_state chapter_11_shade_after_prepass = {.cull = GL_BACK, .depth_func = GL_EQUAL};
+static const gl_pass_state shade_after_prepass = {.cull = GL_BACK, .depth_func = GL_EQUAL};
 
 static struct {
     gbuffer g;
@@ -210,7 +210,7 @@ static bool count_evaluations(clusters *c, const gbuffer *g, const gpu_scene *gs
         return false;
     bool drawn = g ? chapter_11_shade_deferred(c, g, gs, &(gl_pass_state){0}, CLUSTERS_VIEW_COUNT)
                    : clusters_draw_depth(c, gs) &&
-                         chapter_11_shade_forward(c, gs, &chapter_11_shade_after_prepass, CLUSTERS_VIEW_COUNT);
+                         chapter_11_shade_forward(c, gs, &shade_after_prepass, CLUSTERS_VIEW_COUNT);
     return clusters_count_end(c, drawn);
 }
 
@@ -231,7 +231,7 @@ static bool forward_plus_prepass(clusters *c, const gpu_scene *gs, GLuint target
 /* 3. every object shaded once, GL_EQUAL: only the fragment the pre-pass kept. */
 static bool forward_plus_shade(clusters *c, const gpu_scene *gs, clusters_view view)
 {
-    return chapter_11_shade_forward(c, gs, &chapter_11_shade_after_prepass, view);
+    return chapter_11_shade_forward(c, gs, &shade_after_prepass, view);
 }
 
 const app_forward_plus chapter_11_forward_plus = {
@@ -262,7 +262,7 @@ static bool frame(app *a)
     if (app_renderer_is(a, "forward"))
         return app_render_forward(a);
     bool deferred = app_renderer_is(a, "deferred");
-    a->pass_state = deferred ? &deferred_pass : &chapter_11_shade_after_prepass;
+    a->pass_state = deferred ? &deferred_pass : &shade_after_prepass;
     if (!(deferred ? frame_deferred(a) : frame_forward_plus(a)))
         return false;
     a->linear_written = a->linear_output;

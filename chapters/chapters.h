@@ -32,14 +32,12 @@ bool chapter_07_draw_with(gbuffer *g, deferred_volumes *dv, const gpu_scene *gs,
  *                                       one full-screen pass reading g, into the framebuffer bound
  *   chapter_11_shade_forward(c, gs, pass, view)
  *                                       every opaque object shaded once, after the depth pre-pass
- *   chapter_11_forward_plus             Forward+'s frame and count, as the runner draws it
- * and the state of Forward+'s shading after its pre-pass (GL_EQUAL). */
+ *   chapter_11_forward_plus             Forward+'s passes and count, as the runner draws them */
 bool chapter_11_assign(clusters *c, const gpu_scene *gs);
 bool chapter_11_shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *gs, const gl_pass_state *pass,
                                clusters_view view);
 bool chapter_11_shade_forward(clusters *c, const gpu_scene *gs, const gl_pass_state *pass, clusters_view view);
 extern const app_forward_plus chapter_11_forward_plus;
-extern const gl_pass_state chapter_11_shade_after_prepass;
 
 /* The last line of a chapter: its main(), which hands the runner chapter 11's Forward+ (every chapter
  * offers it) and the chapter; nothing when compiled for the embedding library. */

@@ -8,25 +8,19 @@
 #define ARGS(...) ((const char *const[]){__VA_ARGS__, NULL})
 
 const course_renderer course_renderers[COURSE_RENDERER_COUNT] = {
-    {"forward", &chapter_00, ARGS("--renderer", "forward"), "depth pre-pass + per-object light lists", false},
-    {"forward-naive", &chapter_00, ARGS("--renderer", "forward-naive"), "every object with every light", false},
-    {"forward-prepass", &chapter_00, ARGS("--renderer", "forward-prepass"), "depth pre-pass only", false},
-    {"forward-lists", &chapter_00, ARGS("--renderer", "forward-lists"), "per-object light lists only", false},
-    {"deferred-fullscreen", &chapter_03, ARGS("--renderer", "deferred"),
-     "one full-screen pass, all lights per pixel", true},
-    {"deferred-volumes", &chapter_07, ARGS("--renderer", "deferred"),
-     "depth-tested back faces of one sphere per light", true},
-    {"deferred-volumes-windowed", &chapter_07, ARGS("--renderer", "deferred", "--falloff", "windowed"),
-     "deferred-volumes with the windowed falloff: no cut-off step", true},
-    {"deferred-stencil", &chapter_08, ARGS("--renderer", "deferred"),
-     "per batch of lights, a stencil pass, then light where it is set", true},
-    {"deferred-tiled", &chapter_10, ARGS("--renderer", "deferred"),
-     "per-tile light lists, one pass reading the G-buffer once per pixel", true},
-    /* Forward+ as every chapter offers it (chapter 11's passes, glass included, chapter 12) */
-    {"forward-plus", &chapter_00, ARGS("--renderer", "forward-plus"),
-     "clustered forward: depth pre-pass, each fragment loops over its cluster's lights", false},
-    {"deferred-clustered", &chapter_11, ARGS("--renderer", "deferred"),
-     "per-cluster light lists, one pass reading the G-buffer once per pixel", true},
+    {"forward", &chapter_00, ARGS("--renderer", "forward"), false}, /* depth pre-pass + light lists */
+    {"forward-naive", &chapter_00, ARGS("--renderer", "forward-naive"), false}, /* every light everywhere */
+    {"forward-prepass", &chapter_00, ARGS("--renderer", "forward-prepass"), false},
+    {"forward-lists", &chapter_00, ARGS("--renderer", "forward-lists"), false},
+    {"deferred-fullscreen", &chapter_03, ARGS("--renderer", "deferred"), true}, /* all lights per pixel */
+    {"deferred-volumes", &chapter_07, ARGS("--renderer", "deferred"), true},    /* depth-tested back faces */
+    /* the same with the windowed falloff: no cut-off step (its error is the model's price) */
+    {"deferred-volumes-windowed", &chapter_07, ARGS("--renderer", "deferred", "--falloff", "windowed"), true},
+    {"deferred-stencil", &chapter_08, ARGS("--renderer", "deferred"), true}, /* stencil light volumes */
+    {"deferred-tiled", &chapter_10, ARGS("--renderer", "deferred"), true},   /* per-tile light lists */
+    /* Forward+ as every chapter offers it: chapter 11's passes, with chapter 12's glass */
+    {"forward-plus", &chapter_00, ARGS("--renderer", "forward-plus"), false},
+    {"deferred-clustered", &chapter_11, ARGS("--renderer", "deferred"), true}, /* per-cluster lists */
 };
 
 int course_renderer_find(const char *name)
@@ -43,11 +37,13 @@ app_embed *course_set_embed(course_set *set, int r, const gpu_scene *gs)
     while (course_renderers[first].chapter != course_renderers[r].chapter)
         first++;
     app_embed **e = &set->open[first];
-    app_forward_set_plus(&chapter_11_forward_plus); /* as CHAPTER_MAIN does */
-    if (!*e && !app_embed_open(course_renderers[r].chapter, course_renderers[r].args, gs, e))
+    if (!*e) {
+        app_forward_set_plus(&chapter_11_forward_plus); /* as CHAPTER_MAIN does */
+        if (!app_embed_open(course_renderers[r].chapter, course_renderers[r].args, gs, e))
+            return NULL;
+    } else if (set->chosen[first] != r && !app_embed_choose(*e, course_renderers[r].args)) {
         return NULL;
-    if (set->chosen[first] != r && !app_embed_choose(*e, course_renderers[r].args))
-        return NULL;
+    }
     set->chosen[first] = r;
     return *e;
 }

@@ -17,8 +17,7 @@ typedef struct course_renderer {
     const char *name;
     const app_desc *chapter;
     const char *const *args; /* NULL-terminated, without the program name */
-    const char *summary;
-    bool deferred;  /* lights from a G-buffer */
+    bool deferred;           /* lights from a G-buffer */
 } course_renderer;
 
 enum { COURSE_RENDERER_COUNT = 11 };

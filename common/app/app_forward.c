@@ -29,9 +29,7 @@ static bool draw_variant(app_forward *f, const forward_options *variant, const g
     if (!need_forward(f) || !forward_render(&f->fwd, gs, target, fo))
         return false;
     out->shaded = o.count_pixels ? forward_shaded_pixels(&f->fwd) : -1;
-    out->lights_per_pixel = fo.light_lists && gs->src->object_count > 0
-                                ? (double)f->fwd.list_entries / gs->src->object_count
-                                : gs->light_count;
+    out->lights_per_pixel = forward_lights_per_pixel(&f->fwd, gs, fo.light_lists);
     return true;
 }
 

@@ -285,4 +285,10 @@ bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_opti
     return ok;
 }
 
+double forward_lights_per_pixel(const forward *f, const gpu_scene *gs, bool light_lists)
+{
+    int objects = gs->src->object_count;
+    return light_lists && objects > 0 ? (double)f->list_entries / objects : gs->light_count;
+}
+
 long forward_shaded_pixels(const forward *f) { return f->shaded_pixels; }

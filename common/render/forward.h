@@ -23,6 +23,8 @@
  *   forward_variant_find(name)              chapter 00's forward renderer called name ("forward",
  *                                           "forward-naive", "forward-prepass", "forward-lists"):
  *                                           its optimisations; NULL when name is none of them
+ *   forward_lights_per_pixel(f, gs, lists)  the lights each shaded fragment of the last frame looped
+ *                                           over: with the lists, their mean length per object
  *   forward_shaded_pixels(f)                fragments that passed the depth test in the last
  *                                           shading pass (GL_SAMPLES_PASSED), when counting is on:
  *                                           the opaque objects' plus the transparent ones'
@@ -111,6 +113,7 @@ bool forward_draw_shaded(forward *f, const gpu_scene *gs, forward_options option
 bool forward_draw_transparent(forward *f, const gpu_scene *gs, const forward_glass *glass);
 bool forward_draw_linear(forward *f, const gpu_scene *gs, bool (*draw)(void *user, const gpu_scene *gs), void *user);
 const forward_options *forward_variant_find(const char *name);
+double forward_lights_per_pixel(const forward *f, const gpu_scene *gs, bool light_lists);
 long forward_shaded_pixels(const forward *f);
 
 #endif
