@@ -96,12 +96,10 @@ static void sweep_destroy(sweep_gl *s)
     gl_program_destroy(&s->probe_program);
     fbo_destroy(&s->exact);
     fbo_destroy(&s->probe);
-    free(s->exact_position);
-    free(s->exact_normal);
-    free(s->probe_normal);
-    free(s->probe_position);
-    free(s->hdr);
-    free(s->forward_hdr);
+    float *const read_backs[] = {s->exact_position, s->exact_normal, s->probe_normal,
+                                 s->probe_position, s->hdr,          s->forward_hdr};
+    for (size_t i = 0; i < sizeof read_backs / sizeof read_backs[0]; i++)
+        free(read_backs[i]);
     image_destroy(&s->reference_picture);
     image_destroy(&s->forward_picture);
     memset(s, 0, sizeof *s);
