@@ -115,7 +115,7 @@ static struct {
 
 /* Instances [first, first + count) of the light list, with the program in use (both programs share
  * light_volume.vert, so they rasterise the same pixels). */
-static void draw_lights(GLint u_first, GLint u_fullscreen, int first, int count, bool fullscreen)
+static void draw_volume_instances(GLint u_first, GLint u_fullscreen, int first, int count, bool fullscreen)
 {
     glUniform1i(u_first, first);
     glUniform1i(u_fullscreen, fullscreen);
@@ -128,14 +128,14 @@ static void draw_lights(GLint u_first, GLint u_fullscreen, int first, int count,
 }
 
 /* A lighting draw, counted in a query of its own: the stencil passes between them must not be. */
-static void light_draw(bool counted, const gl_pass_state *pass, int first, int count, bool fullscreen)
+static void draw_lighting(bool counted, const gl_pass_state *pass, int first, int count, bool fullscreen)
 {
     const light_volumes *lv = &state.dv.lv;
     glUseProgram(lv->program);
     gl_pass_state_apply(pass);
     if (counted)
         glBeginQuery(GL_SAMPLES_PASSED, state.queries[state.queries_used++]);
-    draw_lights(lv->u_first_instance, lv->u_fullscreen, first, count, fullscreen);
+    draw_volume_instances(lv->u_first_instance, lv->u_fullscreen, first, count, fullscreen);
     if (counted)
         glEndQuery(GL_SAMPLES_PASSED);
 }
@@ -199,11 +199,11 @@ static bool draw_volumes(app *a, light_volumes_view view)
         const light_batch *batch = &state.lb.batches[b];
         glUseProgram(state.stencil_program);
         gl_pass_state_apply(&state.count);
-        draw_lights(state.u_first, state.u_fullscreen, batch->first, batch->count, false);
-        light_draw(counted, &state.light, batch->first, batch->count, false);
+        draw_volume_instances(state.u_first, state.u_fullscreen, batch->first, batch->count, false);
+        draw_lighting(counted, &state.light, batch->first, batch->count, false);
     }
     if (gs->light_count > lv->finite_count)
-        light_draw(counted, &fullscreen_pass, lv->finite_count, gs->light_count - lv->finite_count, true);
+        draw_lighting(counted, &fullscreen_pass, lv->finite_count, gs->light_count - lv->finite_count, true);
     gl_pass_state_reset();
     a->shaded_pixels = counted ? counted_pixels() : -1;
     a->linear = &state.dv.accum; /* the sum in linear radiance, before the present pass */
