@@ -150,7 +150,7 @@ chapter_table() {
 mv "$data/chapters.md.tmp" "$data/chapters.md"
 echo "wrote $data/chapters.md"
 
-bench_args=()
+bench_args=(--full)
 $quick && bench_args=(--quick)
 build/bin/bench --out "$data/bench" "${bench_args[@]}"
 # The stamp goes on top of the benchmark's own report, which names the machine too; Forward+ against

@@ -7,7 +7,8 @@
  * timed frames one untimed frame per renderer counts the lighting work (GL_SAMPLES_PASSED) and
  * keeps the picture for the error against the exact reference (forward, fp32, cut-off 0).
  *
- *   build/bin/bench                 the default sweep at 800x800 (a few minutes on 2 cores)
+ *   build/bin/bench                 the course's sweep at 800x800 (about 3 minutes on 2 cores)
+ *   build/bin/bench --full          the pages' sweep (about 15 minutes): scripts/update-docs.sh
  *   build/bin/bench --quick         a small sweep (seconds): the test suite checks its output's shape
  *
  * This file is the top-level flow; the parts live in tools/bench/:
@@ -42,6 +43,23 @@ static bool write_outputs(const bench_state *st)
            (!st->opt.plots || bench_gbuffer_only() || bench_plots_make(st));
 }
 
+/* What the run will do and about how long it takes, measured on the 2-core llvmpipe machine the
+ * pages' figures come from (docs/compare.md); a GPU is much faster. */
+static void print_plan(const bench_options *o, int cases)
+{
+    const char *minutes = strcmp(o->sweep_name, "full") == 0     ? "about 15 minutes"
+                          : strcmp(o->sweep_name, "course") == 0 ? "about 3 minutes"
+                                                                 : "under a minute";
+    fprintf(stderr,
+            "bench: the %s sweep: %d cases (%d scene(s) x %d light counts, %d cut-offs) x %d renderers%s; "
+            "%s on 2 cores with llvmpipe%s\n",
+            o->sweep_name, cases, o->scene_count, o->light_list_count, o->cutoff_count, o->renderer_count,
+            bench_gbuffer_enabled() ? ", then the G-buffer layouts" : "", minutes,
+            strcmp(o->sweep_name, "full") == 0 ? "" : " (--full: the pages' sweep)");
+    fprintf(stderr, "bench: results will be in %s/ (bench.md, bench.csv%s)\n", o->out_dir,
+            o->plots ? ", time_vs_lights.png, speed_vs_error.png" : "");
+}
+
 int main(int argc, char **argv)
 {
     static bench_state st; /* large; zeroed */
@@ -66,7 +84,8 @@ int main(int argc, char **argv)
     fflush(stdout);
 
     st.case_total = bench_run_count_cases(o);
-    double t0 = bench_measure_now_ms();
+    print_plan(o, st.case_total);
+    double t0 = st.start_ms = bench_measure_now_ms();
     bench_measure m;
     bench_renderers *br = NULL;
     bool ok = bench_measure_create(o->width, o->height, &m) &&

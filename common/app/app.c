@@ -85,26 +85,32 @@ bool app_target_make(app *a)
     return fbo_create(&a->target, &desc, a->width, a->height);
 }
 
-/* "geometry 3.10, lighting 8.20" from frame times summed over n frames. */
+/* "geometry 3.10, lighting 8.20" from frame times summed over n frames; compare mode's passes are
+ * not the chapter's. */
 static void format_passes(const frame_times *sum, int n, char *out, size_t size)
 {
     out[0] = '\0';
     for (int k = 0, used = 0; k < sum->count && used >= 0 && (size_t)used < size; k++)
-        used += snprintf(out + used, size - (size_t)used, "%s%s %.2f", k ? ", " : "", sum->names[k], sum->ms[k] / n);
+        if (strcmp(sum->names[k], APP_COMPARE_PASS) != 0 && strcmp(sum->names[k], APP_COMPOSE_PASS) != 0)
+            used += snprintf(out + used, size - (size_t)used, "%s%s %.2f", used ? ", " : "", sum->names[k],
+                             sum->ms[k] / n);
 }
 
 /* The title shows the frame time the timer measured (never CPU submission time alone), its passes
- * and the clock; --verbose logs it too. */
+ * and the clock, then forward's frame in compare mode; --verbose logs it too. */
 static void update_title(const app *a, const frame_times *sum, int n, bool paused)
 {
-    char title[640], passes[320];
-    double ms = sum->frame_ms / n;
+    char title[720], passes[320], fwd_part[64] = "";
+    const app_frame_split split = app_frame_split_of(sum);
+    double ms = split.own_ms / n;
     format_passes(sum, n, passes, sizeof passes);
-    snprintf(title, sizeof title, "%s | %s%s%s | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps; %s) [%s] | cut-off %.4g%s%s",
+    if (split.forward_ms > 0)
+        snprintf(fwd_part, sizeof fwd_part, " | compare: forward %.2f ms", split.forward_ms / n);
+    snprintf(title, sizeof title, "%s | %s%s%s | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps; %s) [%s]%s | cut-off %.4g%s%s",
              a->cli->program, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward",
              a->cli->views ? " | view " : "", a->cli->views ? a->cli->views[a->view] : "", a->scene.light_count,
              a->gs.culled_count, a->width, a->height, ms, ms > 0 ? 1000.0 / ms : 0.0, passes,
-             frame_timer_clock(&a->timer), a->cutoff, a->cutoff == 0 ? " (exact)" : "", paused ? " | paused" : "");
+             frame_timer_clock(&a->timer), fwd_part, a->cutoff, a->cutoff == 0 ? " (exact)" : "", paused ? " | paused" : "");
     platform_set_title(title);
     log_debug("window: %s", title);
 }
@@ -237,8 +243,9 @@ static bool draw_frame(app *a, loop *l, int *rc)
         return false;
     }
     if (l->opt->bench) {
-        glFinish(); /* the frame's wall time, whatever the pass clock */
-        record_bench(a, l, (platform_time() - t0) * 1000.0);
+        glFinish(); /* the frame's wall time, whatever the pass clock; less compare mode's forward */
+        const app_frame_split split = app_frame_split_of(&a->timer.last);
+        record_bench(a, l, (platform_time() - t0) * 1000.0 - split.forward_ms - split.compose_ms);
     }
     if (platform_is_windowed() || l->window.have_script)
         record_title(a, l, now);

@@ -72,7 +72,13 @@ const char *const *app_with_forward_plus(const char *const *list, const char **o
  *                                      the script's after-frame events; false: stop (rc says why)
  *   app_window_overlay_text(w, a, paused, out, size)
  *   app_window_save(fbo, path)         colour attachment 0 as an image file */
-#define APP_COMPARE_PASS "forward (compare)"
+#define APP_COMPARE_PASS "compare forward" /* forward's whole frame in compare mode, as one pass */
+#define APP_COMPOSE_PASS "compare compose" /* both pictures into the one shown: neither side's time */
+/* A frame's time split into the chapter's own and compare mode's two passes (zero when off). */
+typedef struct app_frame_split {
+    double own_ms, forward_ms, compose_ms;
+} app_frame_split;
+app_frame_split app_frame_split_of(const frame_times *t);
 
 typedef struct app_window {
     input_script script;

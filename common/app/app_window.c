@@ -168,15 +168,32 @@ bool app_window_compare(app_window *w, app *a, bool (*draw_forward)(app *a, GLui
         return true;
     if (!w->have_cmp && !(w->have_cmp = compare_create(&w->cmp, a->width, a->height)))
         return false;
+    /* forward's own passes (light lists, pre-pass, shading) go into this one pass, on the same clock */
     frame_timer_mark(APP_COMPARE_PASS);
+    frame_timer_hold(true);
     const app_forward_options o = {0};
     bool drawn = draw_forward ? draw_forward(a, w->cmp.forward.id)
                               : app_forward_draw(&a->forward, "forward", &a->gs, w->cmp.forward.id, o, NULL);
+    frame_timer_hold(false);
+    frame_timer_mark(APP_COMPOSE_PASS);
     if (!drawn ||
         !compare_compose(&w->cmp, &a->target, w->compare, divider_pixel(w, a)))
         return false;
     w->shown = &w->cmp.shown;
     return true;
+}
+
+app_frame_split app_frame_split_of(const frame_times *t)
+{
+    app_frame_split s = {.own_ms = t->frame_ms};
+    for (int k = 0; k < t->count; k++) {
+        if (strcmp(t->names[k], APP_COMPARE_PASS) == 0)
+            s.forward_ms += t->ms[k];
+        else if (strcmp(t->names[k], APP_COMPOSE_PASS) == 0)
+            s.compose_ms += t->ms[k];
+    }
+    s.own_ms -= s.forward_ms + s.compose_ms;
+    return s;
 }
 
 /* ---- the ideal work ------------------------------------------------------------------------ */
@@ -265,25 +282,21 @@ static void put(char *out, size_t size, size_t *used, const char *fmt, ...)
     *used = n < 0 ? size : *used + (size_t)n;
 }
 
-/* The frame's time split into the chapter's side and the compare pass. */
+/* The frame's time split into the chapter's side and compare mode's passes. */
 static void put_times(const app_window *w, const app *a, char *out, size_t size, size_t *used)
 {
     /* the half-second average; the last frame's times until there is one (a single headless frame) */
     const frame_times *t = w->times.count > 0 ? &w->times : &a->timer.last;
-    double compare_ms = 0.0;
+    const app_frame_split split = app_frame_split_of(t);
     put(out, size, used, "passes (ms):");
-    for (int k = 0; k < t->count; k++) {
-        if (strcmp(t->names[k], APP_COMPARE_PASS) == 0)
-            compare_ms += t->ms[k];
-        else
-            put(out, size, used, " %s %.2f%s", t->names[k], t->ms[k], k + 1 < t->count ? "," : "");
-    }
-    double own = t->frame_ms - compare_ms;
-    put(out, size, used, "\nframe %.2f ms = %.0f fps (clock: %s)\n", own, own > 0 ? 1000.0 / own : 0.0,
-        frame_timer_clock(&a->timer));
+    for (int k = 0, shown = 0; k < t->count; k++)
+        if (strcmp(t->names[k], APP_COMPARE_PASS) != 0 && strcmp(t->names[k], APP_COMPOSE_PASS) != 0)
+            put(out, size, used, "%s %s %.2f", shown++ ? "," : "", t->names[k], t->ms[k]);
+    put(out, size, used, "\nframe %.2f ms = %.0f fps (clock: %s)\n", split.own_ms,
+        split.own_ms > 0 ? 1000.0 / split.own_ms : 0.0, frame_timer_clock(&a->timer));
     if (w->compare != COMPARE_OFF)
         put(out, size, used, "compare %s: forward %.2f ms (left) | %s %.2f ms (right)\n", compare_mode_name(w->compare),
-            compare_ms, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward", own);
+            split.forward_ms, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward", split.own_ms);
 }
 
 int app_window_overlay_text(const app_window *w, const app *a, bool paused, char *out, size_t size)

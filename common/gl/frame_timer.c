@@ -55,7 +55,7 @@ const char *frame_timer_clock(const frame_timer *t) { return t->gpu ? "gpu-timer
 void frame_timer_begin(frame_timer *t)
 {
     memset(&t->current, 0, sizeof t->current);
-    t->in_pass = false;
+    t->in_pass = t->held = false;
     active = t;
     if (!t->gpu)
         glFinish(); /* nothing earlier is counted in this frame */
@@ -81,8 +81,8 @@ static void close_pass(frame_timer *t)
 void frame_timer_mark(const char *name)
 {
     frame_timer *t = active;
-    if (!t || (t->in_pass && strcmp(t->current.names[t->current.count - 1], name) == 0))
-        return; /* not timing, or the same pass goes on */
+    if (!t || t->held || (t->in_pass && strcmp(t->current.names[t->current.count - 1], name) == 0))
+        return; /* not timing, held, or the same pass goes on */
     close_pass(t);
     if (t->current.count == FRAME_TIMER_MAX_PASSES) {
         log_warn("frame_timer: more than %d passes; '%s' is counted in the last", FRAME_TIMER_MAX_PASSES, name);
@@ -92,6 +92,12 @@ void frame_timer_mark(const char *name)
     if (t->gpu)
         glBeginQuery(GL_TIME_ELAPSED, t->queries[t->slot][t->current.count - 1]);
     t->in_pass = true;
+}
+
+void frame_timer_hold(bool on)
+{
+    if (active)
+        active->held = on;
 }
 
 /* The other slot's frame, recorded one frame ago: its queries are (nearly always) done by now. */

@@ -12,6 +12,9 @@
  *                               frame is being timed, or when `name` is the pass already running):
  *                               the passes in common/ call it themselves (work before the first
  *                               mark counts in the CPU clock's frame time only)
+ *   frame_timer_hold(on)        while on, frame_timer_mark() changes nothing: the pass running
+ *                               takes in all the work inside, marks and all (compare mode times a
+ *                               whole forward frame, with its own passes, as one pass that way)
  *   frame_timer_end(t)          the frame ends; t->last holds the latest finished frame (with GPU
  *                               queries that is the previous frame: they are read one frame late
  *                               so that the CPU never waits for them)
@@ -42,6 +45,7 @@ typedef struct frame_timer {
     frame_times pending[2];
     int slot;     /* the frame being recorded */
     bool in_pass;
+    bool held; /* frame_timer_hold(true) */
     double t_begin, t_pass;
     frame_times current, last;
 } frame_timer;
@@ -50,6 +54,7 @@ bool frame_timer_create(frame_timer *t);
 void frame_timer_destroy(frame_timer *t);
 void frame_timer_begin(frame_timer *t);
 void frame_timer_mark(const char *name);
+void frame_timer_hold(bool on);
 void frame_timer_end(frame_timer *t);
 const char *frame_timer_clock(const frame_timer *t);
 

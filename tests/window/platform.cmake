@@ -45,3 +45,15 @@ if(TARGET 07_face_culling)
            $<TARGET_FILE:07_face_culling> WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(robust.frame_clocks PROPERTIES LABELS robust SKIP_RETURN_CODE 77)
 endif()
+
+# Compare mode times forward as its own pass on the same clock, and the chapter's figure leaves it
+# out, in --bench, the title and the overlay alike (tests/window/run_compare_timing.sh). Chapter 07
+# (the runner's forward), 11 (its own clustered frame) and 13 (its own forward MSAA draw_forward).
+foreach(chapter 07_face_culling 11_clustered 13_msaa)
+  if(TARGET ${chapter})
+    add_test(NAME compare.timing.${chapter}
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/window/run_compare_timing.sh $<TARGET_FILE:${chapter}>
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(compare.timing.${chapter} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  endif()
+endforeach()

@@ -65,7 +65,7 @@ void bench_gbuffer_print_help(FILE *f)
     fprintf(f, "  --gbuffer-sweep MODE   on: after the sweeps, every G-buffer layout (common/render/gbuffer.h) on\n"
                "                        the default scene and the city: bytes, time, normal, position and\n"
                "                        picture error (DIR/bench_gbuffer.csv, a section of bench.md);\n"
-               "                        off; only: nothing else (default on; --quick: off)\n");
+               "                        off; only: nothing else (--full: on; otherwise off)\n");
 }
 
 /* ---- GL ---------------------------------------------------------------------------------------- */

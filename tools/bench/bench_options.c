@@ -21,10 +21,18 @@ void bench_options_print_help(FILE *f)
         "Times forward and deferred renderers on the same frames, counts their lighting work and\n"
         "measures their error against an exact reference; writes DIR/bench.csv, DIR/bench.md,\n"
         "DIR/time_vs_lights.png and DIR/speed_vs_error.png (gnuplot).\n\n"
+        "The sweep (the options below change it further):\n"
+        "  (default)             the course's sweep, what scripts/run-all.sh runs (about 3 minutes on\n"
+        "                        2 cores with llvmpipe): scenes default, city, teapots at 1, 16, 256,\n"
+        "                        1024 and the scene's own lights, every renderer, the cut-off at\n"
+        "                        1, 5, 20; no G-buffer sweep\n"
+        "  --full                the pages' sweep (scripts/update-docs.sh; about 15 minutes): the five\n"
+        "                        scenes at 1,4,16,64,256,1024,4096 and their own lights, the cut-off\n"
+        "                        at 0.5,1,2,5,10,20,32, the G-buffer sweep\n"
+        "  --quick               small sweep for tests: 160x160, default scene, 1,16,64 lights,\n"
+        "                        3 frames, cut-offs 2,5,16 at 16 lights\n\n"
         "  --lights LIST         light counts, comma-separated; 'scene' = the scene's own lights\n"
-        "                        (default 1,4,16,64,256,1024,4096,scene)\n"
         "  --scenes LIST         scene names in --scene-dir or .scene paths\n"
-        "                        (default default,city,bunnies,sphere,teapots)\n"
         "  --renderers LIST      of: forward-naive forward forward-prepass forward-lists\n"
         "                        deferred-fullscreen deferred-volumes deferred-volumes-windowed\n"
         "                        deferred-stencil deferred-tiled forward-plus deferred-clustered\n"
@@ -36,7 +44,7 @@ void bench_options_print_help(FILE *f)
         "                        chapter 10's per-tile light lists, deferred-clustered: chapter 11's\n"
         "                        clustered deferred; for tiled, clustered and Forward+ shaded_pixels are\n"
         "                        light-loop iterations)\n"
-        "  --cutoffs LIST        cut-off sweep in 1/256 units (default 0.5,1,2,5,10,20,32)\n"
+        "  --cutoffs LIST        cut-off sweep in 1/256 units\n"
         "  --cutoff-scene NAME   scene of the cut-off sweep (default: the first of --scenes)\n"
         "  --cutoff-lights N     light count of the cut-off sweep (default 256)\n"
         "  --size WxH            frame size (default 800x800)\n"
@@ -54,9 +62,7 @@ void bench_options_print_help(FILE *f)
         "                        assets/scenes)\n"
         "  --out DIR             output folder (default out)\n"
         "  --backend egl|osmesa  headless GL (default egl)\n"
-        "  --no-plots            skip gnuplot\n"
-        "  --quick               small sweep for tests: 160x160, default scene, 1,16,64 lights,\n"
-        "                        3 frames, cut-offs 2,5,16 at 16 lights\n");
+        "  --no-plots            skip gnuplot\n");
     bench_gbuffer_print_help(f);
     fprintf(f, "  --help                this text\n\n"
                "exit codes: 0 ok, 1 runtime failure, 2 usage error, 77 no GL context\n");
@@ -204,11 +210,26 @@ static void set_defaults(bench_options *o)
     o->out_dir = "out";
     o->plots = true;
     o->backend = BACKEND_EGL;
+    o->sweep_name = "full";
     bench_gbuffer_reset(false);
+}
+
+/* The learner's sweep: the scenes and light counts where the renderers' order changes (one light,
+ * where forward wins; 16, where clustered and tiled overtake it on the city and the teapots; 256
+ * and 1,024, where only the light lists stay flat), each scene's own lights, every renderer, and
+ * the cut-off at three points. A few minutes on 2 cores; --full is the pages' sweep. */
+static void set_course(bench_options *o)
+{
+    o->sweep_name = "course";
+    set_lights(o, "1,16,256,1024,scene");
+    set_scenes(o, "default,city,teapots");
+    set_cutoffs(o, "1,5,20");
+    bench_gbuffer_reset(true);
 }
 
 static void set_quick(bench_options *o)
 {
+    o->sweep_name = "quick";
     o->quick = true;
     set_lights(o, "1,16,64");
     set_scenes(o, "default");
@@ -311,10 +332,21 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
 {
     bench_options *o = out;
     set_defaults(o);
-    /* --quick first, so the options after it can still change what it set. */
-    for (int i = 1; i < argc; i++)
-        if (strcmp(argv[i], "--quick") == 0)
-            set_quick(o);
+    /* The sweep first (the course's unless --full or --quick), so the options after it can still
+     * change what it set. */
+    bool quick = false, full = false;
+    for (int i = 1; i < argc; i++) {
+        quick = quick || strcmp(argv[i], "--quick") == 0;
+        full = full || strcmp(argv[i], "--full") == 0;
+    }
+    if (quick && full) {
+        usage_error("--quick and --full are two sweeps; give one", "--quick --full");
+        return EXIT_CODE_USAGE;
+    }
+    if (quick)
+        set_quick(o);
+    else if (!full)
+        set_course(o);
     bool have_cutoff_scene = false;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -323,7 +355,7 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
             bench_options_print_help(stdout);
             return CLI_PARSE_DONE;
         }
-        if (strcmp(a, "--quick") == 0)
+        if (strcmp(a, "--quick") == 0 || strcmp(a, "--full") == 0)
             continue;
         if (strcmp(a, "--no-plots") == 0) {
             o->plots = false;

@@ -42,6 +42,7 @@ typedef struct bench_options {
     uint32_t seed;
     const char *scene_dir;
     const char *out_dir;
+    const char *sweep_name; /* "course" (the default), "full" or "quick" */
     bool quick, plots;
     backend_kind backend;
 } bench_options;

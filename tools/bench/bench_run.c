@@ -254,6 +254,15 @@ static void print_case(const bench_state *st, const case_plan *p)
     }
 }
 
+/* Time so far and a guess at the rest: the cases done so far, on average, times those to come. */
+static void print_progress(const bench_state *st)
+{
+    double elapsed = (bench_measure_now_ms() - st->start_ms) / 1000.0;
+    double left = elapsed / st->case_index * (st->case_total - st->case_index);
+    fprintf(stderr, "bench: %d of %d cases done in %.0f s; about %.0f s to go\n", st->case_index,
+            st->case_total, elapsed, left);
+}
+
 static bool run_case(run_ctx *x, gpu_scene *gs, const case_desc *c)
 {
     const bench_options *o = &x->st->opt;
@@ -268,6 +277,7 @@ static bool run_case(run_ctx *x, gpu_scene *gs, const case_desc *c)
         return false;
     x->st->case_index++;
     print_case(x->st, &p);
+    print_progress(x->st);
     return gl_check("run_case");
 }
 

@@ -57,6 +57,7 @@ typedef struct bench_state {
     bench_row *rows;
     int row_count, row_cap;
     int case_index, case_total; /* for the progress lines */
+    double start_ms;            /* bench_measure_now_ms() when the sweeps began */
     char cpu[256];
     int cores;
     char gl_renderer[256], gl_version[256];
