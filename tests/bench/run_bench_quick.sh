@@ -91,6 +91,25 @@ done
 awk '/^## Targets/ { t = 1; next } /^## / { t = 0 } t && /^\|---/ { getline; if ($0 !~ /^\| /) bad = 1 }
      t && /holds none of the targets/ { said = 1 } END { exit bad || !said }' "$out/bench.md" ||
     { echo "FAIL: the quick run's Targets section is an empty table or says nothing"; exit 1; }
+# The plots: each renderer its own colour and point type, the same pair in both plots.
+styles=$(grep -o "with linespoints lc rgb '[^']*' pt [0-9]* title '[^']*'" "$out/bench_plots.gp" |
+         sed "s/with linespoints lc rgb '\([^']*\)' pt \([0-9]*\) title '\([^']*\)'/\3 \1-\2/" | sort -u)
+renderers=$(echo "$styles" | awk '{ print $1 }' | sort -u | wc -l)
+pairs=$(echo "$styles" | awk '{ print $2 }' | sort -u | wc -l)
+lines=$(echo "$styles" | wc -l)
+if [ "$renderers" -lt 9 ] || [ "$pairs" -ne "$renderers" ] || [ "$lines" -ne "$renderers" ]; then
+    echo "FAIL: the plots' styles (renderer colour-point): $(echo $styles)"; exit 1
+fi
+# The start says what the run will do and where its results go; --cutoffs none drops the cut-off
+# section and its plot; with deferred renderers only there is no crossover to find, and it says so.
+grep -q "^bench: the quick sweep: 6 cases" "$out.stderr" && grep -q "^bench: results will be in $out/" "$out.stderr" ||
+    { echo "FAIL: the run did not say what it would do: $(head -3 "$out.stderr")"; exit 1; }
+"$bench" --quick --cutoffs none --renderers deferred-volumes,deferred-stencil --out "$out/none" >/dev/null 2>&1 ||
+    { echo "FAIL: --cutoffs none"; exit 1; }
+if grep -q "^## Speed against error" "$out/none/bench.md" || [ -e "$out/none/speed_vs_error.png" ] ||
+   ! grep -q "^None to find: --renderers holds only deferred" "$out/none/bench.md"; then
+    echo "FAIL: --cutoffs none with deferred renderers only: $(grep -A2 '^## Crossover' "$out/none/bench.md")"; exit 1
+fi
 # Bad options: exit 2 with one line.
 "$bench" --no-such-option >/dev/null 2>"$out.err"; rc=$?
 if [ "$rc" -ne 2 ] || [ "$(wc -l <"$out.err")" -ne 1 ]; then

@@ -23,3 +23,26 @@ add_test(NAME lessons.layers_refused
     grep -q 'not a layer folder' <<<\"$out\""
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(lessons.layers lessons.layers_refused PROPERTIES LABELS unit)
+# Every command a page shows runs as written (tests/lessons/page_commands.py): one test per page, from
+# a scratch folder laid out like the repository, headless; and the check refuses a page with each
+# kind of broken command (tests/data/pages_bad/bad.md).
+execute_process(COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/lessons/page_commands.py --list ${CMAKE_SOURCE_DIR}
+                OUTPUT_VARIABLE COURSE_PAGES_WITH_COMMANDS OUTPUT_STRIP_TRAILING_WHITESPACE)
+string(REPLACE "\n" ";" COURSE_PAGES_WITH_COMMANDS "${COURSE_PAGES_WITH_COMMANDS}")
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/README.md)
+foreach(page ${COURSE_PAGES_WITH_COMMANDS})
+  string(REGEX REPLACE "^docs/|\\.md$" "" name ${page})
+  add_test(NAME pages.commands.${name}
+    COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/lessons/page_commands.py --run ${CMAKE_SOURCE_DIR}
+            ${CMAKE_BINARY_DIR} ${page})
+  set_tests_properties(pages.commands.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77 TIMEOUT 900)
+endforeach()
+add_test(NAME pages.commands_refused
+  COMMAND ${BASH} -c "out=$(${SYSTEM_PYTHON3} tests/lessons/page_commands.py --run . ${CMAKE_BINARY_DIR} \
+    tests/data/pages_bad/bad.md) && exit 1; echo \"$out\"; \
+    [ $(grep -c '^FAIL' <<<\"$out\") -eq 6 ] && grep -q 'without a tag' <<<\"$out\" && \
+    grep -q 'without --headless' <<<\"$out\" && grep -q \"printed none of \\['shaded_pixels=1'\\]\" <<<\"$out\" && \
+    grep -q 'exit 2, expected 0' <<<\"$out\" && grep -q 'short variant' <<<\"$out\" && \
+    grep -q 'which no line of the block starts with' <<<\"$out\""
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(pages.commands_refused PROPERTIES LABELS golden SKIP_RETURN_CODE 77)

@@ -21,11 +21,11 @@ void bench_options_print_help(FILE *f)
         "Times forward and deferred renderers on the same frames, counts their lighting work and\n"
         "measures their error against an exact reference; writes DIR/bench.csv, DIR/bench.md,\n"
         "DIR/time_vs_lights.png and DIR/speed_vs_error.png (gnuplot).\n\n"
-        "The sweep (the options below change it further):\n"
+        "The sweep (the last of --full and --quick; the options below change it further):\n"
         "  (default)             the course's sweep, what scripts/run-all.sh runs (about 3 minutes on\n"
         "                        2 cores with llvmpipe): scenes default, city, teapots at 1, 16, 256,\n"
         "                        1024 and the scene's own lights, every renderer, the cut-off at\n"
-        "                        1, 5, 20; no G-buffer sweep\n"
+        "                        1, 5, 20; 5 timed frames per case (1 warm-up); no G-buffer sweep\n"
         "  --full                the pages' sweep (scripts/update-docs.sh; about 15 minutes): the five\n"
         "                        scenes at 1,4,16,64,256,1024,4096 and their own lights, the cut-off\n"
         "                        at 0.5,1,2,5,10,20,32, the G-buffer sweep\n"
@@ -44,7 +44,7 @@ void bench_options_print_help(FILE *f)
         "                        chapter 10's per-tile light lists, deferred-clustered: chapter 11's\n"
         "                        clustered deferred; for tiled, clustered and Forward+ shaded_pixels are\n"
         "                        light-loop iterations)\n"
-        "  --cutoffs LIST        cut-off sweep in 1/256 units\n"
+        "  --cutoffs LIST        cut-off sweep in 1/256 units; none: no cut-off sweep\n"
         "  --cutoff-scene NAME   scene of the cut-off sweep (default: the first of --scenes)\n"
         "  --cutoff-lights N     light count of the cut-off sweep (default 256)\n"
         "  --size WxH            frame size (default 800x800)\n"
@@ -179,6 +179,10 @@ static bool set_renderers(bench_options *o, const char *list)
 
 static bool set_cutoffs(bench_options *o, const char *list)
 {
+    if (list && strcmp(list, "none") == 0) {
+        o->cutoff_count = 0;
+        return true;
+    }
     return set_list(o, list, &o->cutoff_count, read_cutoff, "bad --cutoffs list",
                     "bad cut-off in --cutoffs (1/256 units, > 0)");
 }
@@ -224,6 +228,8 @@ static void set_course(bench_options *o)
     set_lights(o, "1,16,256,1024,scene");
     set_scenes(o, "default,city,teapots");
     set_cutoffs(o, "1,5,20");
+    o->frames = 5, o->warmup = 1; /* a first look: medians of 5 frames, the pages' run takes 10 */
+    o->case_budget_ms = 800;
     bench_gbuffer_reset(true);
 }
 
@@ -332,16 +338,14 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
 {
     bench_options *o = out;
     set_defaults(o);
-    /* The sweep first (the course's unless --full or --quick), so the options after it can still
-     * change what it set. */
+    /* The sweep first (the course's unless --full or --quick; the last of those two given), so the
+     * options after it can still change what it set. */
     bool quick = false, full = false;
     for (int i = 1; i < argc; i++) {
-        quick = quick || strcmp(argv[i], "--quick") == 0;
-        full = full || strcmp(argv[i], "--full") == 0;
-    }
-    if (quick && full) {
-        usage_error("--quick and --full are two sweeps; give one", "--quick --full");
-        return EXIT_CODE_USAGE;
+        if (strcmp(argv[i], "--quick") == 0)
+            quick = true, full = false;
+        else if (strcmp(argv[i], "--full") == 0)
+            full = true, quick = false;
     }
     if (quick)
         set_quick(o);

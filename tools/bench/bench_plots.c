@@ -12,6 +12,27 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Each renderer its own colour and mark, the same in both plots and whichever renderers a run
+ * selects (indexed by the renderer, not by its place in --renderers): eleven colours a reader tells
+ * apart (no pale yellow), and filled shapes and crosses, so no two renderers share both. An
+ * extrapolated time gets a large ring around its mark instead. */
+static const char *const renderer_colours[] = {"#e41a1c", "#377eb8", "#4daf4a", "#984ea3", "#ff7f00", "#a65628",
+                                               "#f781bf", "#000000", "#17becf", "#808080", "#1a237e"};
+static const int renderer_points[] = {5, 7, 9, 11, 13, 15, 1, 2, 3, 5, 7};
+#define STYLES ((int)(sizeof renderer_points / sizeof renderer_points[0]))
+
+/* "lc rgb '#e41a1c' pt 5" for renderer r; `ring`: the mark of an extrapolated time. */
+static const char *style_of(int r, bool ring)
+{
+    static char out[64];
+    int k = r % STYLES;
+    if (ring)
+        snprintf(out, sizeof out, "lc rgb '%s' pt 6 ps 2.5", renderer_colours[k]);
+    else
+        snprintf(out, sizeof out, "lc rgb '%s' pt %d", renderer_colours[k], renderer_points[k]);
+    return out;
+}
+
 /* One block per (scene, renderer): lights, ms, measured (1) or extrapolated (0). The scene's own
  * lights are another light set, not a point of the generated sweep: left out. */
 static void write_time_data(FILE *f, const bench_state *st)
@@ -43,7 +64,7 @@ static void write_time_plots(FILE *f, const bench_state *st)
     int rows_n = (o->scene_count + cols - 1) / cols;
     fprintf(f,
             "set multiplot layout %d,%d title 'Median ms per frame against light count, %dx%d, %s (log-log; "
-            "open marks: extrapolated)'\n",
+            "ringed marks: extrapolated)'\n",
             rows_n, cols, o->width, o->height, st->gl_renderer);
     fprintf(f,
             "set logscale xy\nset grid\nset key top left\nset xlabel 'lights'\nset ylabel 'ms per frame'\n");
@@ -52,12 +73,12 @@ static void write_time_plots(FILE *f, const bench_state *st)
         bench_options_label_scene(o->scenes[s], label, sizeof label);
         fprintf(f, "set title '%s'\nplot ", label);
         for (int i = 0; i < o->renderer_count; i++) {
-            fprintf(f,
-                    "%s$t_%d_%d using 1:2 with lines lc %d title '%s', "
-                    "$t_%d_%d using 1:(($3)>0?$2:NaN) with points lc %d pt 7 notitle, "
-                    "$t_%d_%d using 1:(($3)>0?NaN:$2) with points lc %d pt 6 notitle",
-                    i ? ", \\\n     " : "", s, i, i + 1, bench_renderer_name(o->renderers[i]), s, i, i + 1, s,
-                    i, i + 1);
+            int r = o->renderers[i];
+            fprintf(f, "%s$t_%d_%d using 1:(($3)>0?$2:NaN) with linespoints %s title '%s', ",
+                    i ? ", \\\n     " : "", s, i, style_of(r, false), bench_renderer_name(r));
+            fprintf(f, "$t_%d_%d using 1:2 with lines %s notitle, ", s, i, style_of(r, false));
+            fprintf(f, "$t_%d_%d using 1:(($3)>0?NaN:$2) with points %s notitle, ", s, i, style_of(r, true));
+            fprintf(f, "$t_%d_%d using 1:(($3)>0?NaN:$2) with points %s notitle", s, i, style_of(r, false));
         }
         fprintf(f, "\n");
     }
@@ -100,11 +121,11 @@ static void write_error_plots(FILE *f, const bench_state *st)
         for (int i = 0; i < o->renderer_count; i++) {
             if (!bench_renderer_in_cutoff_sweep(o->renderers[i]))
                 continue;
-            fprintf(
-                f,
-                "%s$e_%d using %d:2 with linespoints lc %d pt 7 title '%s', "
-                "$e_%d using %d:2:(sprintf('%%g', $4)) with labels offset 0.8,0.6 textcolor lt %d notitle",
-                first ? "" : ", \\\n     ", i, x, i + 1, bench_renderer_name(o->renderers[i]), i, x, i + 1);
+            int r = o->renderers[i];
+            fprintf(f, "%s$e_%d using %d:2 with linespoints %s title '%s', ", first ? "" : ", \\\n     ", i, x,
+                    style_of(r, false), bench_renderer_name(r));
+            fprintf(f, "$e_%d using %d:2:(sprintf('%%g', $4)) with labels offset 0.8,0.6 textcolor rgb '%s' notitle",
+                    i, x, renderer_colours[r % STYLES]);
             first = false;
         }
         fprintf(f, "\n");
@@ -122,8 +143,10 @@ static bool write_plot_script(const bench_state *st, const char *term)
     fprintf(f, "set terminal %s size 1500,900 font ',10'\nset datafile missing 'NA'\n", term);
     write_time_data(f, st);
     write_time_plots(f, st);
-    write_error_data(f, st);
-    write_error_plots(f, st);
+    if (st->opt.cutoff_count > 0) { /* --cutoffs none: no error plot */
+        write_error_data(f, st);
+        write_error_plots(f, st);
+    }
     return bench_report_close_tmp(f, tmp, st->opt.out_dir, "bench_plots.gp");
 }
 
@@ -152,7 +175,7 @@ bool bench_plots_make(const bench_state *st)
     if (!plotted)
         log_error("gnuplot failed on %s/bench_plots.gp", st->opt.out_dir);
     const char *plots[] = {"time_vs_lights.png", "speed_vs_error.png"};
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < (st->opt.cutoff_count > 0 ? 2 : 1); i++) {
         char tmp[1024], final[1024];
         snprintf(tmp, sizeof tmp, "%s/%s.tmp", st->opt.out_dir, plots[i]);
         snprintf(final, sizeof final, "%s/%s", st->opt.out_dir, plots[i]);

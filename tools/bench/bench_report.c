@@ -234,9 +234,24 @@ static void write_targets(FILE *f, const bench_state *st)
     write_conclusion(f, &sp, rows);
 }
 
+/* Whether --renderers holds a forward and a deferred renderer, the two sides a crossover needs. */
+static bool both_sides_selected(const bench_options *o)
+{
+    bool fwd = false, def = false;
+    for (int i = 0; i < o->renderer_count; i++)
+        *(bench_renderer_is_deferred(o->renderers[i]) ? &def : &fwd) = true;
+    return fwd && def;
+}
+
 static void write_crossover(FILE *f, const bench_state *st)
 {
     const bench_options *o = &st->opt;
+    if (!both_sides_selected(o)) {
+        fprintf(f, "## Crossover\n\nNone to find: --renderers holds only %s renderers; the crossover "
+                   "needs a forward and a deferred one.\n\n",
+                o->renderer_count > 0 && bench_renderer_is_deferred(o->renderers[0]) ? "deferred" : "forward");
+        return;
+    }
     fprintf(
         f, "## Crossover\n\nSmallest generated light count at which the fastest deferred renderer beats the "
            "fastest forward one, and the speed-up (best forward ms / best deferred ms) at 1024 lights and "
@@ -396,6 +411,8 @@ static void write_light_table(FILE *f, const bench_state *st, bool errors)
 static void write_cutoff(FILE *f, const bench_state *st)
 {
     const bench_options *o = &st->opt;
+    if (o->cutoff_count == 0)
+        return; /* --cutoffs none */
     fprintf(f,
             "\n## Speed against error: the cut-off (%s, %d lights)\n\n"
             "| cut-off (/256) | renderer | active lights | ms | evaluations / ideal | mean 8-bit | PSNR "
