@@ -24,7 +24,9 @@
 #include "chapters.h"
 #include "clusters.h"
 #include "forward.h"
+#include "frame_timer.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 #include "log.h"
 #include "shadow_atlas.h"
 
@@ -33,7 +35,7 @@
 #include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward-plus", "forward", NULL};
-static const char *const views[] = {"lit", NULL};
+static const char *const views[] = {"lit", "visibility", NULL};
 static const char *const formats[] = {"d32f", "d16", NULL};
 static const char *const pcfs[] = {"1", "3", "5", NULL};
 static const char *const switches[] = {"on", "off", NULL};
@@ -66,6 +68,7 @@ static struct {
     gbuffer g;
     clusters c;
     forward fwd;
+    GLuint visibility_program; /* --view visibility */
 } state;
 
 /* The atlas's options, checked against the context's largest texture. */
@@ -100,13 +103,27 @@ static bool init(app *a)
     const gl_program_extra extra = shadow_atlas_extra(&state.atlas);
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
     a->pass_state = &deferred_pass; /* the overlay shows it */
-    return gbuffer_create(&state.g, a->width, a->height) && clusters_create(&state.c, &lists) &&
-           forward_create_with(&state.fwd, &extra);
+    state.visibility_program = gl_program_load_extra("fullscreen.vert", "shadow_visibility.frag", NULL, &extra);
+    return state.visibility_program && gbuffer_create(&state.g, a->width, a->height) &&
+           clusters_create(&state.c, &lists) && forward_create_with(&state.fwd, &extra);
 }
 
 static bool resize(app *a)
 {
     return gbuffer_resize(&state.g, a->width, a->height);
+}
+
+/* --view visibility: per pixel, the share of the lights reaching it that the atlas lets through. */
+static bool draw_visibility(app *a)
+{
+    frame_timer_mark("visibility");
+    gl_pass_state_apply(&deferred_pass);
+    glUseProgram(state.visibility_program);
+    gpu_scene_bind_lights(&a->gs, state.visibility_program, SHADER_UNIT_LIGHTS);
+    gbuffer_bind_textures(&state.g, &a->gs, state.visibility_program, SHADER_UNIT_GBUFFER);
+    shadow_atlas_bind(state.visibility_program, &state.atlas);
+    gl_draw_fullscreen();
+    return gl_check("14 visibility");
 }
 
 /* Clustered deferred: 1. geometry pass; 2. light assignment; 3. one full-screen shading pass. */
@@ -116,7 +133,9 @@ static bool frame_deferred(app *a)
         return false;
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
-    bool ok = chapter_11_shade_deferred(&state.c, &state.g, &a->gs, &deferred_pass, CLUSTERS_VIEW_LIT);
+    bool ok = app_view_is(a, "visibility")
+                  ? draw_visibility(a)
+                  : chapter_11_shade_deferred(&state.c, &state.g, &a->gs, &deferred_pass, CLUSTERS_VIEW_LIT);
     gl_pass_state_reset();
     return ok;
 }
@@ -140,7 +159,7 @@ static bool frame(app *a)
     if (!shadow_atlas_update(&state.atlas, &a->gs))
         return false;
     a->shaded_pixels = -1;
-    if (app_renderer_is(a, "deferred"))
+    if (app_renderer_is(a, "deferred") || app_view_is(a, "visibility")) /* the view reads the G-buffer */
         return frame_deferred(a);
     return frame_forward(a, a->target.id, app_renderer_is(a, "forward-plus"));
 }
@@ -172,6 +191,7 @@ static void cleanup(app *a)
 {
     if (a->options->bench && state.atlas.depth_program)
         print_report(a);
+    gl_program_destroy(&state.visibility_program);
     forward_destroy(&state.fwd);
     clusters_destroy(&state.c);
     gbuffer_destroy(&state.g);
