@@ -187,20 +187,24 @@ static long light_units(const shadow_plan *p, int i)
     return p->faces[i] * s * s;
 }
 
-/* Over budget: the least important lights take the smallest tiles first, then go unshadowed. */
+/* Over budget: the least important lights give up a tier at a time (sweeps from the least important
+ * up), then, all at the smallest tiles, the least important go unshadowed. */
 static void fit(shadow_plan *p, int n)
 {
     long room = (long)(p->desc.atlas_size / unit_size(p)) * (p->desc.atlas_size / unit_size(p)), used = 0;
     for (int k = 0; k < n; k++)
         if (p->status[k] == SHADOW_SHADOWED)
             used += light_units(p, k);
-    for (int r = n - 1; r >= 0 && used > room; r--) {
-        int i = p->order[r];
-        if (p->status[i] != SHADOW_SHADOWED)
-            continue;
-        used -= light_units(p, i);
-        p->tier[i] = SHADOW_TIERS - 1;
-        used += light_units(p, i);
+    for (bool shrunk = true; used > room && shrunk;) {
+        shrunk = false;
+        for (int r = n - 1; r >= 0 && used > room; r--) {
+            int i = p->order[r];
+            if (p->status[i] != SHADOW_SHADOWED || p->tier[i] == SHADOW_TIERS - 1)
+                continue;
+            used -= light_units(p, i);
+            p->tier[i]++, shrunk = true;
+            used += light_units(p, i);
+        }
     }
     for (int r = n - 1; r >= 0 && used > room; r--) {
         int i = p->order[r];
