@@ -39,8 +39,8 @@ bool shadow_atlas_create(shadow_atlas *s, const shadow_plan_desc *desc, GLenum f
     glBindTexture(GL_TEXTURE_2D, s->target.depth);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR); /* 2 x 2 comparisons, weighted */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glBindTexture(GL_TEXTURE_2D, 0);
     s->depth_program = gl_program_load("forward.vert", "depth_only.frag", NULL);
     s->light_buffer = gl_buffer_create(), s->light_texture = gl_texture_create();

@@ -2,7 +2,7 @@
  *
  *   shadow_atlas_create(s, desc, format, slope_bias)
  *                                   the atlas texture (GL_DEPTH_COMPONENT32F or 16), compared with
- *                                   GL_LEQUAL and read with GL_NEAREST, its framebuffer, the depth
+ *                                   GL_LEQUAL and read with GL_LINEAR (bilinear PCF), its framebuffer, the depth
  *                                   program and the two tables; false (logged) when the context cannot
  *                                   make it
  *   shadow_atlas_destroy(s)

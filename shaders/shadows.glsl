@@ -7,7 +7,7 @@
 //   u_shadow_tiles, SHADER_SHADOW_TILE_TEXELS per tile: the light's view-projection for that face,
 //     then (x, y, size) of the tile in the atlas in texels and the tangent of half its field
 #ifdef SHADOWS
-uniform sampler2DShadow u_shadow_atlas; // depth, compared with GL_LEQUAL, GL_NEAREST
+uniform sampler2DShadow u_shadow_atlas; // depth, compared with GL_LEQUAL, GL_LINEAR: 2 x 2 comparisons, weighted
 uniform samplerBuffer u_shadow_lights;
 uniform samplerBuffer u_shadow_tiles;
 
@@ -23,10 +23,12 @@ int shadow_cube_face(vec3 d)
     return d.z >= 0.0 ? 4 : 5;
 }
 
-// The fraction of the PCF taps round p's texel that see p: 1 lit, 0 in shadow. The face comes from
-// the light-to-point vector; p is first moved along its normal by the normal offset (in texels of
-// that face at p's distance); every tap is clamped inside the tile, whose gutter (the field wider
-// than 90 degrees) holds the neighbouring faces' texels, so no tap reads another light's tile.
+// The fraction of the PCF taps round p that see p: 1 lit, 0 in shadow. The face comes from the
+// light-to-point vector; p is first moved along its normal by the normal offset (in texels of that
+// face at p's distance); the taps lie one texel apart round p's own position (not snapped to the
+// texel grid: each is a bilinear 2 x 2 comparison, so the result moves smoothly with p), every one
+// clamped inside the tile, whose gutter (the field wider than 90 degrees) holds the neighbouring
+// faces' texels, so no tap reads another light's tile.
 float shadow_visibility(int i, vec3 light_position, vec3 p, vec3 n)
 {
     vec4 info = texelFetch(u_shadow_lights, i);
@@ -40,14 +42,14 @@ float shadow_visibility(int i, vec3 light_position, vec3 p, vec3 n)
     float texel_world = 2.0 * (m * vec4(p, 1.0)).w * tile.w / tile.z; // one texel's width at p's depth
     vec4 c = m * vec4(p + n * (info.z * texel_world), 1.0);
     vec3 ndc = c.xyz / c.w;
-    vec2 st = floor((ndc.xy * 0.5 + 0.5) * tile.z);
+    vec2 st = (ndc.xy * 0.5 + 0.5) * tile.z;
     float ref = min(ndc.z * 0.5 + 0.5, 1.0);
     vec2 atlas = vec2(textureSize(u_shadow_atlas, 0));
     int r = int(info.w) / 2;
     float lit = 0.0;
     for (int y = -r; y <= r; y++)
         for (int x = -r; x <= r; x++) {
-            vec2 s = clamp(st + vec2(x, y), vec2(0.0), vec2(tile.z - 1.0)) + 0.5;
+            vec2 s = clamp(st + vec2(x, y), vec2(1.0), vec2(tile.z - 1.0));
             lit += texture(u_shadow_atlas, vec3((tile.xy + s) / atlas, ref));
         }
     return lit / float((2 * r + 1) * (2 * r + 1));
