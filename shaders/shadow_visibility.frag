@@ -3,7 +3,8 @@
 // G-buffer, the share of the lights reaching it that the shadow maps let through, in red (1: all of
 // them, 0: none), and in green whether any light reaches it at all (1) or none (0: nothing to shadow).
 // The test against an exact shadow ray reads it (tests/shadows/test_shadow_reference.c).
-// Built with SHADOWS: shade_light_index() is shadowed, shade_light() is not.
+// Built with SHADOWS only: shade_light_index() is shadowed, shade_light() is not.
+// variants: SHADOWS 1
 #include "shading.glsl"
 #include "gbuffer_read.glsl"
 
