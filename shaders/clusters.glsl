@@ -62,7 +62,7 @@ vec3 cluster_shade(ivec2 range, vec3 p, vec3 n, vec3 v, vec3 albedo, float specu
     int count = cluster_loop_count(range);
     for (int k = 0; k < count; k++) {
         int i = range.y < 0 ? k : texelFetch(u_cluster_lights, range.x + k).r;
-        c += shade_light(light_fetch(i), light_fetch_cone(i), p, n, v, albedo, specular, shininess);
+        c += shade_light_index(i, p, n, v, albedo, specular, shininess);
     }
     return c;
 }

@@ -48,7 +48,7 @@ void main()
     }
     for (int k = 0; k < count; k++) {
         int i = u_use_list ? texelFetch(u_light_list, first + k).r : k;
-        c += shade_light(light_fetch(i), light_fetch_cone(i), v_world, n, v, v_albedo, v_specular, v_shininess);
+        c += shade_light_index(i, v_world, n, v, v_albedo, v_specular, v_shininess);
     }
 #if defined(TRANSPARENT)
     // Specular included: the whole shaded colour is weighted by A when blended.

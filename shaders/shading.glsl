@@ -96,6 +96,22 @@ vec3 shade_light(light_data L, vec3 p, vec3 n, vec3 v, vec3 albedo, float specul
     return shade_light(L, NO_CONE, p, n, v, albedo, specular, shininess);
 }
 
+// Light i's contribution, as the light loops add it up: shade_light() with the light's own cone; in a
+// program built with SHADOWS (chapter 14) times the fraction of the light that reaches p
+// (shadows.glsl), looked up only where the light adds something.
+#include "shadows.glsl"
+
+vec3 shade_light_index(int i, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess)
+{
+    light_data L = light_fetch(i);
+    vec3 c = shade_light(L, light_fetch_cone(i), p, n, v, albedo, specular, shininess);
+#ifdef SHADOWS
+    if (c != vec3(0.0))
+        c *= shadow_visibility(i, L.position, p, n);
+#endif
+    return c;
+}
+
 vec3 shade_ambient(vec3 albedo)
 {
     return u_ambient * albedo;

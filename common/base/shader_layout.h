@@ -13,6 +13,8 @@
  *                            count per fragment and the heat map's saturation count
  *   texture units:           where each pass binds its textures (GLSL 3.30 has no binding layout)
  *   G-buffer encodings:      how a layout's RT1 holds the normal (common/render/gbuffer.h lists the layouts)
+ *   shadow tables (chapter 14, shaders/shadows.glsl): per light one texel (first tile or -1, faces 1 or 6,
+ *                            normal offset in texels, PCF taps per side); per tile SHADOW_TILE_TEXELS
  */
 #ifndef COMMON_SHADER_LAYOUT_H
 #define COMMON_SHADER_LAYOUT_H
@@ -50,7 +52,12 @@
     X(UNIT_OBJECTS, 2)                                                                                     \
     X(UNIT_GBUFFER, 3) /* three units: albedo, normal, depth */                                           \
     X(UNIT_LIGHT_INDEX, 6)                                                                                 \
-    X(UNIT_IMAGE, 0)   /* a full-screen pass's one input texture */
+    X(UNIT_IMAGE, 0)   /* a full-screen pass's one input texture */                                    \
+    X(UNIT_SHADOW_ATLAS, 8)  /* chapter 14: the depth atlas (a comparison sampler) */                       \
+    X(UNIT_SHADOW_LIGHTS, 9) /* per light: first tile, faces, tile size in texels, gutter */               \
+    X(UNIT_SHADOW_TILES, 10) /* per tile: its light-space matrix, its place in the atlas */                \
+    X(SHADOW_TILE_TEXELS, 5) /* matrix columns 0-3, then (x, y, size in texels, tan of half the field) */  \
+    X(SHADOW_MAX_PCF, 5)     /* the widest PCF kernel: 5 x 5 taps */
 
 #define SHADER_LAYOUT_ENUM(name, value) SHADER_##name = (value),
 enum { SHADER_LAYOUT(SHADER_LAYOUT_ENUM) };

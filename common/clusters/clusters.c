@@ -122,7 +122,7 @@ GLuint clusters_program(clusters *c, clusters_program_id which)
         [CLUSTERS_PROGRAM_GLASS] = {"forward.vert", "forward_plus.frag", "TRANSPARENT 1"},
     };
     if (!c->programs[which])
-        c->programs[which] = gl_program_load(files[which][0], files[which][1], files[which][2]);
+        c->programs[which] = gl_program_load_extra(files[which][0], files[which][1], files[which][2], &c->desc.extra);
     return c->programs[which];
 }
 
@@ -144,6 +144,7 @@ void clusters_use(const clusters *c, const gpu_scene *gs, GLuint program, cluste
     glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);
     glUniform1i(glGetUniformLocation(program, "u_view_mode"), view_mode(view));
     glUniform1i(glGetUniformLocation(program, "u_output_linear"), view == CLUSTERS_VIEW_LINEAR);
+    gl_program_extra_bind(&c->desc.extra, program);
 }
 
 bool clusters_draw_depth(clusters *c, const gpu_scene *gs)

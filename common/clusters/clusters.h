@@ -20,7 +20,8 @@
  *   clusters_program(c, which)        one of the programs, built on first use; 0 (logged) on failure
  *   clusters_use(c, gs, program, view)
  *                                     `program` in use with the lights, the lists, the eye and the
- *                                     view (what the shader writes: clusters_view)
+ *                                     view (what the shader writes: clusters_view), and desc.extra's
+ *                                     inputs
  *   clusters_draw_depth(c, gs)        Forward+'s depth pre-pass: every opaque object, depth only,
  *                                     with the caller's depth state (forward.vert + depth_only.frag);
  *                                     the caller names the pass in the frame timer
@@ -54,6 +55,7 @@
 #include "cluster_grid.h"
 #include "cluster_lists.h"
 #include "fbo.h"
+#include "gl_program.h"
 #include "gpu_scene.h"
 
 typedef enum clusters_view {
@@ -78,6 +80,7 @@ typedef struct clusters_desc {
     int cluster_limit; /* most entries a cluster's list holds (more: every light); 0: no limit */
     bool compute;      /* the lists made by compute shaders (GL 4.3), not on the CPU */
     bool check;        /* with compute: compare them with the CPU's every frame */
+    gl_program_extra extra; /* a later chapter's additions to the shading programs (chapter 14) */
 } clusters_desc;
 
 #define CLUSTERS_TILE_SIZE 32

@@ -251,6 +251,26 @@ GLuint gl_program_load(const char *vert, const char *frag, const char *defines)
     return link(stages, 2, pair_name(vert, frag, what, sizeof what));
 }
 
+GLuint gl_program_load_extra(const char *vert, const char *frag, const char *defines, const gl_program_extra *extra)
+{
+    if (!extra || !extra->defines)
+        return gl_program_load(vert, frag, defines);
+    if (!defines)
+        return gl_program_load(vert, frag, extra->defines);
+    char all[1024];
+    if (snprintf(all, sizeof all, "%s\n%s", defines ? defines : "", extra->defines) >= (int)sizeof all) {
+        log_error("%s + %s: defines longer than %zu bytes", vert, frag, sizeof all - 1);
+        return 0;
+    }
+    return gl_program_load(vert, frag, all);
+}
+
+void gl_program_extra_bind(const gl_program_extra *extra, GLuint program)
+{
+    if (extra && extra->bind)
+        extra->bind(program, extra->user);
+}
+
 GLuint gl_compute_program_load(const char *comp, const char *defines)
 {
     const GLuint stage = compile(GL_COMPUTE_SHADER, comp, NULL, defines);

@@ -10,6 +10,10 @@
  *   gl_compute_program_load(comp, defines)
  *                                         the same for one compute shader, shaders/<comp> (GL 4.3:
  *                                         the caller checks gl_have_compute() first)
+ *   gl_program_load_extra(vert, frag, defines, extra)
+ *                                         gl_program_load with extra->defines after `defines` (extra
+ *                                         may be NULL: none)
+ *   gl_program_extra_bind(extra, program) extra->bind(program, extra->user), when there is one
  *   gl_program_destroy(&program)
  *   gl_shader_dir()                       where shaders are read from: data_dir()/shaders, or
  *                                         $COURSE_SHADER_DIR
@@ -24,7 +28,18 @@
 
 #include <glad/gl.h>
 
+/* What a later chapter adds to the programs a module builds (chapter 14's shadows in chapter 00's
+ * forward renderer and chapter 11's cluster passes): defines after the module's own, and a function
+ * that sets its inputs on each of those programs, called with the program in use before it draws. */
+typedef struct gl_program_extra {
+    const char *defines; /* "A 1\nB 2", or NULL */
+    void (*bind)(GLuint program, const void *user);
+    const void *user;
+} gl_program_extra;
+
 GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
+GLuint gl_program_load_extra(const char *vert, const char *frag, const char *defines, const gl_program_extra *extra);
+void gl_program_extra_bind(const gl_program_extra *extra, GLuint program);
 GLuint gl_compute_program_load(const char *comp, const char *defines);
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
 void gl_program_destroy(GLuint *program);

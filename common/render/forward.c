@@ -35,8 +35,15 @@ const forward_options *forward_variant_find(const char *name)
 
 bool forward_create(forward *f)
 {
+    return forward_create_with(f, NULL);
+}
+
+bool forward_create_with(forward *f, const gl_program_extra *extra)
+{
     memset(f, 0, sizeof *f);
-    f->program = gl_program_load("forward.vert", "forward.frag", NULL);
+    if (extra)
+        f->extra = *extra;
+    f->program = gl_program_load_extra("forward.vert", "forward.frag", NULL, &f->extra);
     f->depth_program = gl_program_load("forward.vert", "depth_only.frag", NULL);
     if (!f->program || !f->depth_program) {
         forward_destroy(f);
@@ -125,7 +132,7 @@ void forward_draw_depth(const forward *f, const gpu_scene *gs)
 static GLuint shading_program(forward *f, bool linear)
 {
     if (linear && !f->linear_program)
-        f->linear_program = gl_program_load("forward.vert", "forward.frag", "OUTPUT_LINEAR 1");
+        f->linear_program = gl_program_load_extra("forward.vert", "forward.frag", "OUTPUT_LINEAR 1", &f->extra);
     return linear ? f->linear_program : f->program;
 }
 
@@ -141,6 +148,7 @@ static void bind_shading(const forward *f, const gpu_scene *gs, GLuint program, 
     glUniform1i(glGetUniformLocation(program, "u_light_list"), SHADER_UNIT_LIGHT_LIST);
     glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);
     glUniform1i(glGetUniformLocation(program, "u_use_list"), light_lists);
+    gl_program_extra_bind(&f->extra, program);
 }
 
 /* The opaque objects, with the caller's depth state (chapter 00's pass 3). */
@@ -160,7 +168,7 @@ static bool draw_opaque(forward *f, const gpu_scene *gs, forward_options options
 bool forward_draw_transparent(forward *f, const gpu_scene *gs, const forward_glass *glass)
 {
     if (!f->glass_program)
-        f->glass_program = gl_program_load("forward.vert", "forward.frag", "TRANSPARENT 1");
+        f->glass_program = gl_program_load_extra("forward.vert", "forward.frag", "TRANSPARENT 1", &f->extra);
     if (!f->glass_program)
         return false;
     frame_timer_mark("transparent");

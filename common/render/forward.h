@@ -1,6 +1,8 @@
 /* forward.h - chapter 00's forward renderer, shared so every chapter can switch to it.
  *
  *   forward_create(f)                       compile the shaders
+ *   forward_create_with(f, extra)           the same with a later chapter's additions to every
+ *                                           shading program (gl_program.h; chapter 14's shadows)
  *   forward_destroy(f)
  *   forward_render(f, gs, target, options)  draw gs into the framebuffer `target` (cleared here):
  *                                           the three passes below with the state they need;
@@ -57,6 +59,7 @@
 #define COMMON_FORWARD_H
 
 #include "fbo.h"
+#include "gl_program.h"
 #include "gpu_scene.h"
 #include "present_pass.h"
 
@@ -102,9 +105,11 @@ typedef struct forward {
     size_t list_cap;
     long list_entries; /* sum of list lengths in the last frame */
     long shaded_pixels;
+    gl_program_extra extra; /* forward_create_with's */
 } forward;
 
 bool forward_create(forward *f);
+bool forward_create_with(forward *f, const gl_program_extra *extra);
 void forward_destroy(forward *f);
 bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_options options);
 bool forward_build_light_lists(forward *f, const gpu_scene *gs);

@@ -68,6 +68,7 @@ typedef struct scene_object {
     vec3 scale; /* default 1 1 1 */
     scene_key *keys; /* sorted by time; NULL when static */
     int key_count;
+    bool cast_off; /* `cast off`: casts no shadow (chapter 14); default false: it casts */
 } scene_object;
 
 /* A point light, or (directive `spot`) a spot light: the same light inside a cone. Zero spot fields
@@ -82,6 +83,7 @@ typedef struct scene_light {
     bool spot;                  /* false: a point light (the fields below are 0) */
     vec3 direction;             /* spot: the cone's axis, as given (not zero; not normalised) */
     float inner_deg, outer_deg; /* spot: half-angles from the axis, 0 < inner <= outer < 90 */
+    bool shadow_off;            /* `shadow off`: never shadowed (chapter 14); default false */
 } scene_light;
 
 typedef struct scene {

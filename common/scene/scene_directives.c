@@ -275,16 +275,17 @@ static bool take_object_refs(parser *p, scene_object *o)
     return true;
 }
 
-enum { OBJECT_POSITION, OBJECT_ROTATE_Y, OBJECT_SCALE };
-static const char *const OBJECT_ATTRIBUTES[] = {"position", "rotate_y", "scale", NULL};
+enum { OBJECT_POSITION, OBJECT_ROTATE_Y, OBJECT_SCALE, OBJECT_CAST };
+static const char *const OBJECT_ATTRIBUTES[] = {"position", "rotate_y", "scale", "cast", NULL};
 
 static bool take_object_attribute(parser *p, scene_object *o, unsigned *seen)
 {
     int attribute =
-        scene_parser_take_attribute(p, "object", OBJECT_ATTRIBUTES, "position, rotate_y or scale", seen);
+        scene_parser_take_attribute(p, "object", OBJECT_ATTRIBUTES, "position, rotate_y, scale or cast", seen);
     switch (attribute) {
     case OBJECT_POSITION: return scene_parser_take_vec3(p, "object position", NUMBER_ANY, o->position);
     case OBJECT_ROTATE_Y: return scene_parser_take_number(p, "object rotate_y", NUMBER_ANY, &o->rotate_y_deg);
+    case OBJECT_CAST: return scene_parser_take_switch(p, "object cast", &o->cast_off);
     case OBJECT_SCALE:
         if (!scene_parser_take_number(p, "object scale", NUMBER_POSITIVE, &o->scale[0]))
             return false;

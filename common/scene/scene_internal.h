@@ -16,6 +16,7 @@
  *   scene_parser_take_name(p, what, out)                 read a mesh or material name
  *   scene_parser_take_attribute(p, what, names, valid, &seen)
  *                                                        read an attribute name: its index in names
+ *   scene_parser_take_switch(p, what, &off)              read `on` or `off` (off sets *off)
  * scene_directives.c:
  *   scene_parser_run_directive(p)                        parse a tokenized line by its directive
  * scene_lights.c:
@@ -105,6 +106,7 @@ bool scene_parser_take_int(parser *p, const char *what, int min, int max, int *o
 bool scene_parser_take_name(parser *p, const char *what, char out[SCENE_NAME_MAX]);
 int scene_parser_take_attribute(parser *p, const char *what, const char *const names[], const char *valid,
                                 unsigned *seen);
+bool scene_parser_take_switch(parser *p, const char *what, bool *off);
 
 bool scene_parser_run_directive(parser *p);
 bool scene_parser_parse_light(parser *p);

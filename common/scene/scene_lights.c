@@ -26,10 +26,10 @@ static bool add_light(parser *p, const scene_light *l)
 }
 
 /* A spot takes a light's attributes (same indexes) and its cone's. */
-enum { LIGHT_POSITION, LIGHT_COLOR, LIGHT_INTENSITY, LIGHT_ATTENUATION, SPOT_DIRECTION, SPOT_CONE };
-static const char *const LIGHT_ATTRIBUTES[] = {"position", "color", "intensity", "attenuation", NULL};
-static const char *const SPOT_ATTRIBUTES[] = {"position", "color",     "intensity",
-                                              "attenuation", "direction", "cone", NULL};
+enum { LIGHT_POSITION, LIGHT_COLOR, LIGHT_INTENSITY, LIGHT_ATTENUATION, LIGHT_SHADOW, SPOT_DIRECTION, SPOT_CONE };
+static const char *const LIGHT_ATTRIBUTES[] = {"position", "color", "intensity", "attenuation", "shadow", NULL};
+static const char *const SPOT_ATTRIBUTES[] = {"position",  "color",     "intensity", "attenuation",
+                                              "shadow",    "direction", "cone",      NULL};
 
 /* "light color", "spot color": the name of an attribute in messages. */
 static const char *attribute_name(char out[32], const char *what, const char *attribute)
@@ -63,6 +63,7 @@ static bool take_shared_attribute(parser *p, const char *what, int attribute, sc
                                      "bright at its centre), got '%s'",
                                      name, scene_parser_show_token(p->tok[p->pos - 3]).text);
         return true;
+    case LIGHT_SHADOW: return scene_parser_take_switch(p, attribute_name(name, what, "shadow"), &l->shadow_off);
     default: return false; /* already reported */
     }
 }
@@ -70,7 +71,7 @@ static bool take_shared_attribute(parser *p, const char *what, int attribute, sc
 static bool take_light_attribute(parser *p, scene_light *l, unsigned *seen)
 {
     int attribute = scene_parser_take_attribute(p, "light", LIGHT_ATTRIBUTES,
-                                                "position, color, intensity or attenuation", seen);
+                                                "position, color, intensity, attenuation or shadow", seen);
     return take_shared_attribute(p, "light", attribute, l);
 }
 
@@ -103,7 +104,7 @@ static bool take_spot_cone(parser *p, scene_light *l)
 static bool take_spot_attribute(parser *p, scene_light *l, unsigned *seen)
 {
     int attribute = scene_parser_take_attribute(
-        p, "spot", SPOT_ATTRIBUTES, "position, direction, cone, color, intensity or attenuation", seen);
+        p, "spot", SPOT_ATTRIBUTES, "position, direction, cone, color, intensity, attenuation or shadow", seen);
     switch (attribute) {
     case SPOT_DIRECTION: {
         if (!scene_parser_take_vec3(p, "spot direction", NUMBER_ANY, l->direction))

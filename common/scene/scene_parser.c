@@ -276,3 +276,14 @@ int scene_parser_take_attribute(parser *p, const char *what, const char *const n
                           scene_parser_show_token(token).text, valid);
     return -1;
 }
+
+bool scene_parser_take_switch(parser *p, const char *what, bool *off)
+{
+    if (scene_parser_at_end(p))
+        return scene_parser_fail(p, "%s: expected on or off", what);
+    const char *token = p->tok[p->pos++];
+    if (strcmp(token, "on") != 0 && strcmp(token, "off") != 0)
+        return scene_parser_fail(p, "%s: expected on or off, got '%s'", what, scene_parser_show_token(token).text);
+    *off = strcmp(token, "off") == 0;
+    return true;
+}

@@ -572,7 +572,7 @@ static void test_spot_errors(void **state)
         {"spot direction 0 -1 0 cone 20 30 cone 10 20\n", "t.scene:1: spot: 'cone' given twice"},
         {"spot direction 0 -1 0 cone 20 30 angle 5\n",
          "t.scene:1: spot: unknown attribute 'angle' (expected position, direction, cone, color, "
-         "intensity or attenuation)"},
+         "intensity, attenuation or shadow)"},
         {"spot direction 0 -1 0 cone 20 30 attenuation 0 1 1\n", "t.scene:1: spot attenuation: KC must be > 0"},
         {"spot direction 0 -1 0 cone 20 30 color 1 -1 1\n", "t.scene:1: spot color: must be >= 0, got '-1'"},
         {"spot direction 0 -1 0 cone 20 30 intensity inf\n",
@@ -604,6 +604,33 @@ static void test_opacity(void **state)
     assert_float_equal(s.materials[2].opacity, 1e-6f, 1e-12f);
     assert_float_equal(s.materials[3].opacity, 1.0f, 0.0f);
     assert_float_equal(s.materials[3].shininess, 8.0f, EPS);
+    scene_destroy(&s);
+}
+
+/* Chapter 14's switches: a light or spot casts shadows and an object casts them unless `off`. */
+static void test_shadow_switches(void **state)
+{
+    (void)state;
+    const char *text = "material m albedo 1 1 1\n"
+                       "mesh box cube\n"
+                       "object box m cast off position 0 1 0\n"
+                       "object box m cast on\n"
+                       "object box m\n"
+                       "light position 0 2 0 shadow off\n"
+                       "light shadow on position 1 2 0\n"
+                       "spot position 0 3 0 direction 0 -1 0 cone 20 30 shadow off\n"
+                       "spot position 0 3 0 direction 0 -1 0 cone 20 30\n";
+    scene s;
+    parse_ok(text, &s);
+    assert_true(s.objects[0].cast_off);
+    assert_false(s.objects[1].cast_off);
+    assert_false(s.objects[2].cast_off);
+    assert_float_equal(s.objects[0].position[1], 1.0f, 0.0f);
+    assert_true(s.lights[0].shadow_off);
+    assert_false(s.lights[1].shadow_off);
+    assert_float_equal(s.lights[1].position[0], 1.0f, 0.0f);
+    assert_true(s.lights[2].shadow_off);
+    assert_false(s.lights[3].shadow_off);
     scene_destroy(&s);
 }
 
@@ -788,5 +815,6 @@ UNIT_TEST_MAIN(setup_dir, tmp_dir_remove, cmocka_unit_test(test_defaults),
                cmocka_unit_test(test_add_light), cmocka_unit_test(test_errors),
                cmocka_unit_test(test_spot), cmocka_unit_test(test_spot_errors),
                cmocka_unit_test(test_opacity), cmocka_unit_test(test_opacity_errors),
+               cmocka_unit_test(test_shadow_switches),
                cmocka_unit_test(test_error_long_line), cmocka_unit_test(test_error_from_file),
                cmocka_unit_test(test_model_paths), cmocka_unit_test(test_large_scene))
