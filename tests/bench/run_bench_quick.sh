@@ -7,9 +7,11 @@
 # what the run covers would depend on the load; so every row must be measured with all 3 frames.
 # Exit 77 (no GL context) passes through as a skip.
 set -u
+. "$(dirname "$0")/../lib/args.sh"
+args_expect 2 "$@"
 bench=$1
 out=$2
-rm -rf "$out"
+args_fresh_dir "$out"
 "$bench" --quick --max-frame-ms 1e9 --case-budget-ms 1e9 --out "$out" >"$out.stdout" 2>"$out.stderr"
 rc=$?
 if [ "$rc" -eq 77 ]; then

@@ -13,9 +13,11 @@
 #   3. the chapter binary counts what the benchmark's copy counts.
 # Exit 77 (no GL context) passes through as a skip.
 set -u
+. "$(dirname "$0")/../lib/args.sh"
+args_expect 3 "$@"
 . "$(dirname "$0")/work_lib.sh"
 bench=$1 chapter=$2 out=$3
-rm -rf "$out"
+args_fresh_dir "$out"
 work_bench "$bench" "$out" default,city 1024,scene forward-plus,deferred-clustered
 
 # CSV columns: 1 sweep, 2 scene, 3 renderer, 4 light_set, 5 lights, 19 ideal, 20 light_evals, 21 ratio.

@@ -15,9 +15,11 @@
 #      stencil reset (--reset off: stale counts are shaded again).
 # Exit 77 (no GL context) passes through as a skip.
 set -u
+. "$(dirname "$0")/../lib/args.sh"
+args_expect 3 "$@"
 . "$(dirname "$0")/work_lib.sh"
 bench=$1 chapter=$2 out=$3
-rm -rf "$out"
+args_fresh_dir "$out"
 work_bench "$bench" "$out" default,city 1024,scene deferred-volumes,deferred-stencil
 
 # CSV columns: 1 sweep, 2 scene, 3 renderer, 4 light_set, 5 lights, 17 shaded, 19 ideal, 21 ratio,

@@ -14,9 +14,11 @@
 #      count grows (the picture does not: agree.10_tile_lights_16_same_picture).
 # Exit 77 (no GL context) passes through as a skip.
 set -u
+. "$(dirname "$0")/../lib/args.sh"
+args_expect 3 "$@"
 . "$(dirname "$0")/work_lib.sh"
 bench=$1 chapter=$2 out=$3
-rm -rf "$out"
+args_fresh_dir "$out"
 work_bench "$bench" "$out/gpu" default,city 1024,scene deferred-volumes,deferred-tiled
 COURSE_NO_COMPUTE=1 work_bench "$bench" "$out/cpu" default 1024 deferred-volumes,deferred-tiled
 

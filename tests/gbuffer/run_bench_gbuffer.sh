@@ -6,9 +6,11 @@
 # rebuilds far positions more precisely than the standard float depth, and bench.md has the section.
 # Timings are never checked.
 set -u
+. "$(dirname "$0")/../lib/args.sh"
+args_expect 2 "$@"
 bench=$1
 out=$2
-rm -rf "$out"
+args_fresh_dir "$out"
 "$bench" --quick --gbuffer-sweep only --out "$out" >"$out.stdout" 2>"$out.stderr"
 rc=$?
 if [ "$rc" -eq 77 ]; then echo "skip: no GL context"; exit 77; fi

@@ -7,8 +7,9 @@
 #   on a context without compute shaders (COURSE_NO_COMPUTE=1) L logs one line and stays.
 # Exit 77 (no GL context) passes through as a skip.
 set -u
+. "$(dirname "$0")/../lib/args.sh"
 bin=$1 out=$2 option=$3 what=$4
-rm -rf "$out"
+args_fresh_dir "$out"
 mkdir -p "$out"
 printf '1 key L\n1 screenshot %s\n2 key L\n2 screenshot %s\n' "$out/key.png" "$out/back.png" >"$out/key.script"
 "$bin" --headless --size 96x64 --gl-debug --$option compute --script "$out/key.script" >"$out/key.log" 2>&1

@@ -68,3 +68,17 @@ endif()
 # The binaries run from any folder, and an installed prefix works after being moved.
 add_test(NAME robust.install COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/robust/run_install.sh ${CMAKE_BINARY_DIR})
 set_tests_properties(robust.install PROPERTIES LABELS robust SKIP_RETURN_CODE 77)
+
+# The tests' scripts a page tells a learner to run print their usage and refuse what they do not take
+# (an option, a wrong count), and never delete a folder they did not make (tests/lib/args.sh).
+add_test(NAME robust.test_scripts
+  COMMAND ${BASH} -c "set -u; tmp=$(mktemp -d); trap 'rm -rf $tmp' EXIT; s=tests/chapters/run_clustered_work.sh; \
+    bash $s --tile 16 2>$tmp/err; [ $? -eq 2 ] && grep -q \"unknown option '--tile'\" $tmp/err && grep -q '^run_clustered_work.sh BENCH' $tmp/err || { echo FAIL option; cat $tmp/err; exit 1; }; \
+    bash $s --help 2>$tmp/err; [ $? -eq 2 ] && grep -q 'BENCH CHAPTER_11 OUT_DIR' $tmp/err || { echo FAIL help; exit 1; }; \
+    bash $s a b 2>$tmp/err; [ $? -eq 2 ] && grep -q '2 argument(s) given, 3 expected' $tmp/err || { echo FAIL count; exit 1; }; \
+    mkdir $tmp/mine && echo keep >$tmp/mine/notes.txt; \
+    bash $s $<TARGET_FILE:bench> $<TARGET_FILE:11_clustered> $tmp/mine 2>$tmp/err; \
+    [ $? -eq 2 ] && grep -q 'was not made by a course test' $tmp/err && [ -f $tmp/mine/notes.txt ] || { echo FAIL kept; exit 1; }; \
+    echo 'ok: usage, refusals, and the learner folder kept'"
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(robust.test_scripts PROPERTIES LABELS robust)
