@@ -18,6 +18,8 @@
 
 /* Heat-map ramp: a difference of 1 is already clearly red, HEAT_SATURATE and above is yellow-white. */
 #define HEAT_SATURATE 32
+/* A difference within the tolerance: there, but not a failure (RGB). */
+#define HEAT_WITHIN_TOLERANCE 24, 28, 56
 
 bool image_create(image *img, int width, int height)
 {
@@ -241,9 +243,11 @@ bool image_compare(const image *a, const image *b, const image *mask, int tolera
         if (pixel_max > tolerance)
             stats->over++;
         stats->pixels++;
-        if (ph) {
+        if (ph) { /* equal black, within the tolerance a dim slate blue, over it the ramp */
             if (pixel_max == 0)
                 memcpy(ph, (unsigned char[4]){0, 0, 0, 255}, 4);
+            else if (pixel_max <= tolerance)
+                memcpy(ph, (unsigned char[4]){HEAT_WITHIN_TOLERANCE, 255}, 4);
             else
                 heat_color(pixel_max, ph);
         }

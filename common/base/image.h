@@ -12,7 +12,10 @@
  *   image_compare(a, b, mask, tol, stats, heat)
  *                                           per-channel RGB stats; mask (may be NULL) selects pixels
  *                                           whose mask red channel is non-zero; heat (may be NULL)
- *                                           receives a diff heat-map
+ *                                           receives a diff heat-map: black where equal, dim slate
+ *                                           blue within tol, and over it a
+ *                                           ramp from dark red to yellow-white, so a real
+ *                                           difference stands out of 1-level rounding
  */
 #ifndef COMMON_IMAGE_H
 #define COMMON_IMAGE_H

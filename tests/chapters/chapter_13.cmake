@@ -75,3 +75,10 @@ function(chapter_13_tests)
   set_tests_properties(chapters.13_bad_samples PROPERTIES LABELS golden WILL_FAIL TRUE)
 endfunction()
 chapter_13_tests()
+
+# Exercise 1 of docs/13_msaa.md states how many pixels MSAA changes and that all are edge pixels:
+# counted from the goldens it names (tests/chapters/msaa_page_counts.py).
+find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
+add_test(NAME pages.13_exercise_counts
+  COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/chapters/msaa_page_counts.py ${CMAKE_SOURCE_DIR})
+set_tests_properties(pages.13_exercise_counts PROPERTIES LABELS unit)

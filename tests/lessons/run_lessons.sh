@@ -51,8 +51,17 @@ expect_first "GPU_SCENE_BACK_TO_FRONT" 12_transparency.c
 expect_first "glCheckFramebufferStatus" 01_fbo_setup.c
 expect_first "glDrawBuffers" 02_mrt_gbuffer.c
 # No lesson behind a flag in common/: the old option structs are gone.
-if grep -n "light_volumes_options\|overwrite\b" "$root"/common/*.[ch]; then
+if grep -rn --include='*.[ch]' "light_volumes_options\|overwrite\b" "$root"/common; then
   echo "FAIL a chapter's lesson is selected by an option in common/"
   status=1
 fi
+# An exercise that compares with a golden says the goldens' size (320x240), or its command fails with
+# "image sizes differ".
+for page in "$root"/docs/[0-9][0-9]_*.md; do
+  section=$(awk '/^## Exercises/ { e = 1; next } /^## / { e = 0 } e' "$page")
+  if grep -q 'tests/golden/' <<<"$section" && ! grep -q -- '--size 320x240' <<<"$section"; then
+    echo "FAIL $(basename "$page"): its exercises compare with goldens without saying --size 320x240"
+    status=1
+  fi
+done
 exit $status

@@ -311,11 +311,17 @@ static void test_compare_known_differences(void **state)
     assert_int_equal(s.over, 2); /* tolerance 2: the pixel with diff 2 is within */
     ASSERT_NEAR(s.frac_over, 2.0 / 12.0);
 
-    /* Heat: black where equal, visible red for small differences, brighter for larger ones. */
+    /* Heat: black where equal, dim slate blue within the tolerance (the diff-2 pixel), clearly red
+     * over it, and no pixel over the tolerance as dark as one within it. */
     assert_int_equal(pixel_at(&heat, 0, 0)[0], 0);
-    const unsigned char *small = pixel_at(&heat, 1, 0), *big = pixel_at(&heat, 3, 1);
-    assert_true(small[0] >= 96);
-    assert_true(big[0] + big[1] + big[2] > small[0] + small[1] + small[2]);
+    const unsigned char *within = pixel_at(&heat, 1, 0), *over = pixel_at(&heat, 3, 1);
+    assert_true(within[2] > within[0] && within[0] + within[1] + within[2] < 255);
+    assert_true(over[0] >= 96 && over[0] > over[2]);
+    assert_true(over[0] + over[1] + over[2] > within[0] + within[1] + within[2]);
+    image_destroy(&heat);
+    /* Tolerance 1: the same diff-2 pixel is over it, red. */
+    assert_true(image_compare(&a, &b, NULL, 1, &s, &heat));
+    assert_true(pixel_at(&heat, 1, 0)[0] >= 96 && pixel_at(&heat, 1, 0)[0] > pixel_at(&heat, 1, 0)[2]);
     image_destroy(&heat);
 
     assert_true(image_compare(&a, &b, NULL, 1, &s, NULL));
