@@ -270,6 +270,7 @@ static bool frame(app *a)
     if (!ok || !shade(a))
         return false;
     a->shaded_pixels = a->count_pixels ? light_evaluations(a) : -1;
+    a->work_name = "light-loop iterations";
     return true;
 }
 

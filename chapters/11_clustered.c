@@ -268,6 +268,7 @@ static bool frame(app *a)
     a->linear_written = a->linear_output;
     /* --bench and the overlay: the light-loop iterations, counted by the same shader */
     a->shaded_pixels = a->count_pixels ? state.c.evaluations : -1;
+    a->work_name = "light-loop iterations";
     return true;
 }
 

@@ -234,6 +234,7 @@ static bool draw_frame(app *a, loop *l, int *rc)
     frame_timer_mark("scene update");
     a->count_pixels = l->opt->bench || l->window.overlay_on;
     a->shaded_pixels = -1;
+    a->work_name = NULL;
     a->lights_per_pixel = 1.0;
     bool ok = gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) && l->desc->frame(a) &&
               app_window_compare(&l->window, a, l->desc->draw_forward);

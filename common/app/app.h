@@ -64,6 +64,7 @@ typedef struct app {
     GLuint query;       /* a GL_SAMPLES_PASSED query for the chapter's lighting pass */
     frame_timer timer;  /* the frame and its passes, on an honest clock (frame_timer.h) */
     long shaded_pixels; /* what the chapter counted with it in the last frame; -1 if not */
+    const char *work_name; /* what that count is, for the overlay; NULL: "lighting fragments" */
     bool count_pixels;  /* whether to count (--bench, or the overlay is on) */
     double lights_per_pixel; /* lights each counted fragment loops over; 1 unless the chapter says */
     bool linear_output;  /* asked by an embedding caller: linear radiance into a float a->target */

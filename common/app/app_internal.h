@@ -100,6 +100,9 @@ typedef struct app_window {
     fbo ideal_target;   /* the scene's depth for the ideal count (forward, drawn when paused) */
     long long ideal;    /* (pixel, light) pairs a perfect volume would shade; -1: not counted */
     unsigned ideal_key; /* what the frame was when it was counted */
+    scene start;        /* its lights only: the lights the run started with, for Backspace */
+    int new_light;      /* the light G added last, labelled until new_light_until; -1: none */
+    double new_light_until;
 } app_window;
 
 bool app_window_create(app_window *w, app *a, const cli_options *opt);

@@ -24,6 +24,7 @@
 #define DIVIDER_GRAB_PIXELS 8.0
 #define LIGHTS_MAX 65536
 #define PAUSE_BADGE_SECONDS 2.0
+#define NEW_LIGHT_SECONDS 3.0 /* how long a light added with G is labelled (or until the next key) */
 
 bool app_window_create(app_window *w, app *a, const cli_options *opt)
 {
@@ -40,6 +41,10 @@ bool app_window_create(app_window *w, app *a, const cli_options *opt)
     w->have_script = opt->script != NULL;
     w->shown = &a->target;
     w->ideal = -1;
+    w->new_light = -1;
+    for (int i = 0; i < a->scene.light_count; i++)
+        if (!scene_add_light(&w->start, &a->scene.lights[i]))
+            return false;
     return true;
 }
 
@@ -52,6 +57,7 @@ void app_window_destroy(app_window *w)
         overlay_destroy(&w->text);
     fbo_destroy(&w->display);
     input_script_destroy(&w->script);
+    scene_destroy(&w->start);
 }
 
 bool app_window_resize(app_window *w, const app *a)
@@ -99,21 +105,54 @@ static void print_pose(const app *a)
 
 /* ---- lights -------------------------------------------------------------------------------- */
 
-/* A white light half-way to the target, reaching as far as half that distance at the default cut-off. */
-static void add_light(app *a)
+/* A warm white light half-way to the target, bright (intensity 3) and reaching as far as the target
+ * at the default cut-off, so that it shows; the window labels it for NEW_LIGHT_SECONDS. */
+static void add_light(app_window *w, app *a)
 {
     const scene_camera *c = &a->scene.camera;
     vec3 dir;
     glm_vec3_sub((float *)c->target, (float *)c->eye, dir);
     float distance = glm_vec3_norm(dir);
-    float reach = fmaxf(0.5f * distance, 0.5f);
-    scene_light l = {.color = {1.0f, 0.95f, 0.85f}, .intensity = 1.0f, .kc = 1.0f, .kl = 0.0f,
-                     .kq = (float)((1.0 / LIGHT_DEFAULT_CUTOFF - 1.0) / ((double)reach * reach))};
+    float reach = fmaxf(distance, 1.0f);
+    const float intensity = 3.0f; /* kc = 1, kl = 0: the radius is sqrt((peak / cutoff - 1) / kq) */
+    scene_light l = {.color = {1.0f, 0.95f, 0.85f}, .intensity = intensity, .kc = 1.0f, .kl = 0.0f,
+                     .kq = (float)((intensity / LIGHT_DEFAULT_CUTOFF - 1.0) / ((double)reach * reach))};
     glm_vec3_scale(dir, 0.5f, dir);
     glm_vec3_add((float *)c->eye, dir, l.position);
-    if (scene_add_light(&a->scene, &l))
-        log_info("lights: %d (added one at %.2f %.2f %.2f)", a->scene.light_count, (double)l.position[0],
-                 (double)l.position[1], (double)l.position[2]);
+    if (!scene_add_light(&a->scene, &l))
+        return;
+    log_info("lights: %d (added one at %.2f %.2f %.2f)", a->scene.light_count, (double)l.position[0],
+             (double)l.position[1], (double)l.position[2]);
+    w->new_light = a->scene.light_count - 1;
+    w->new_light_until = platform_time() + NEW_LIGHT_SECONDS;
+}
+
+/* Backspace: the lights the run started with (the scene's, or --lights'), kept in w->start. */
+static void restore_lights(app_window *w, app *a)
+{
+    if (!light_generate(&a->scene, 0, 0))
+        return;
+    for (int i = 0; i < w->start.light_count; i++)
+        if (!scene_add_light(&a->scene, &w->start.lights[i]))
+            return;
+    w->new_light = -1;
+    log_info("lights: %d, as at the start", a->scene.light_count);
+}
+
+/* For NEW_LIGHT_SECONDS after G: a label at the new light, where the camera sees it. */
+static void mark_new_light(const app_window *w, app *a, overlay *text, GLuint target)
+{
+    if (w->new_light < 0 || w->new_light >= a->scene.light_count || platform_time() > w->new_light_until)
+        return;
+    vec4 p = {0.0f, 0.0f, 0.0f, 1.0f};
+    scene_light_position_at(&a->scene, w->new_light, a->time, p);
+    glm_mat4_mulv(a->gs.view.view_proj, p, p);
+    if (p[3] <= 0.0f)
+        return; /* behind the camera */
+    float x = (p[0] / p[3] * 0.5f + 0.5f) * (float)a->width, y = (0.5f - p[1] / p[3] * 0.5f) * (float)a->height;
+    char label[64];
+    snprintf(label, sizeof label, "+ new light %d", w->new_light + 1);
+    overlay_draw_label(text, target, a->width, a->height, label, x, y, platform_content_scale());
 }
 
 static void scale_lights(app *a, bool twice)
@@ -132,6 +171,8 @@ static void scale_lights(app *a, bool twice)
 
 bool app_window_key(app_window *w, app *a, key_action action)
 {
+    if (action != KEY_ACTION_ADD_LIGHT)
+        w->new_light_until = 0.0; /* the new light's label goes at the next key */
     switch (action) {
     case KEY_ACTION_FRAME_SCENE: {
         float lo[3], hi[3];
@@ -141,7 +182,8 @@ bool app_window_key(app_window *w, app *a, key_action action)
     }
     case KEY_ACTION_HOME_CAMERA: a->scene.camera = w->home; return true;
     case KEY_ACTION_PRINT_POSE: print_pose(a); return true;
-    case KEY_ACTION_ADD_LIGHT: add_light(a); return true;
+    case KEY_ACTION_ADD_LIGHT: add_light(w, a); return true;
+    case KEY_ACTION_LIGHTS_RESTORE: restore_lights(w, a); return true;
     case KEY_ACTION_LIGHTS_DOUBLE: scale_lights(a, true); return true;
     case KEY_ACTION_LIGHTS_HALF: scale_lights(a, false); return true;
     case KEY_ACTION_OVERLAY: w->overlay_on = !w->overlay_on; return true;
@@ -309,11 +351,12 @@ int app_window_overlay_text(const app_window *w, const app *a, bool paused, char
         a->gs.culled_count, a->cutoff, a->cutoff == 0 ? ": exact" : "",
         a->gs.falloff == SHADER_FALLOFF_WINDOWED ? "windowed" : "hard");
     put_times(w, a, out, size, &used);
+    const char *work = a->work_name ? a->work_name : "lighting fragments";
     if (a->shaded_pixels >= 0 && w->ideal > 0 && paused)
-        put(out, size, &used, "lighting fragments %ld = %.2f x the ideal %lld (pixel, light) pairs\n",
+        put(out, size, &used, "%s %ld = %.2f x the ideal %lld (pixel, light) pairs\n", work,
             a->shaded_pixels, (double)a->shaded_pixels / (double)w->ideal, w->ideal);
     else if (a->shaded_pixels >= 0)
-        put(out, size, &used, "lighting fragments %ld = %.2f per pixel (Space: pause to count the ideal)\n",
+        put(out, size, &used, "%s %ld = %.2f per pixel (Space: pause to count the ideal)\n", work,
             a->shaded_pixels, (double)a->shaded_pixels / ((double)a->width * a->height));
     if (a->pass_state && !app_renderer_is_forward(a)) { /* the chapter's own renderer */
         char pass[160];
@@ -358,24 +401,27 @@ const fbo *app_window_display(app_window *w, app *a, bool paused)
     glBlitFramebuffer(0, 0, a->width, a->height, 0, 0, a->width, a->height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     char text[2048];
-    if (w->overlay_on && paused)
-        count_ideal(w, a);
-    if (w->overlay_on) {
-        app_window_overlay_text(w, a, paused, text, sizeof text);
-        overlay_draw(&w->text, w->display.id, a->width, a->height, text, OVERLAY_TOP_LEFT);
-    } else if (platform_time() < w->badge_until && !w->key_list_on) {
-        overlay_draw(&w->text, w->display.id, a->width, a->height, paused ? "PAUSED (Space resumes)" : "RESUMED",
-                     OVERLAY_TOP_LEFT);
-    }
-    if (w->key_list_on) {
+    const float content = platform_content_scale();
+    if (w->key_list_on) { /* F1's list replaces the overlay while it shows: one box, readable */
         FILE *f = fmemopen(text, sizeof text - 1, "w");
         if (f) {
             keys_print_help(f, a->cli->program, a->cli->views != NULL);
             text[ftell(f)] = '\0';
             fclose(f);
-            overlay_draw(&w->text, w->display.id, a->width, a->height, text + 1, OVERLAY_TOP_RIGHT);
+            overlay_draw(&w->text, w->display.id, a->width, a->height, text + 1, OVERLAY_TOP_LEFT, content);
         }
+        return &w->display;
     }
+    if (w->overlay_on && paused)
+        count_ideal(w, a);
+    if (w->overlay_on) {
+        app_window_overlay_text(w, a, paused, text, sizeof text);
+        overlay_draw(&w->text, w->display.id, a->width, a->height, text, OVERLAY_TOP_LEFT, content);
+    } else if (platform_time() < w->badge_until) {
+        overlay_draw(&w->text, w->display.id, a->width, a->height, paused ? "PAUSED (Space resumes)" : "RESUMED",
+                     OVERLAY_TOP_LEFT, content);
+    }
+    mark_new_light(w, a, &w->text, w->display.id);
     return &w->display;
 }
 

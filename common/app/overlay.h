@@ -3,12 +3,21 @@
  *
  *   overlay_create(o)                          program, buffers
  *   overlay_destroy(o)
- *   overlay_draw(o, fbo, width, height, text, corner)
+ *   overlay_draw(o, fbo, width, height, text, corner, content_scale)
  *                                              `text` ('\n' between lines; characters outside
  *                                              printable ASCII shown as spaces) over framebuffer
  *                                              `fbo` of that size, in corner OVERLAY_TOP_LEFT or
- *                                              OVERLAY_TOP_RIGHT, scaled with the height (2x at
- *                                              480 px) so that it stays legible on a HiDPI window
+ *                                              OVERLAY_TOP_RIGHT, scaled with the height and the
+ *                                              screen's content scale (2x at 480 px on a 1x screen),
+ *                                              never so large that a line of OVERLAY_MIN_COLUMNS
+ *                                              characters would not fit; lines wider than the
+ *                                              picture wrap (at a space, indented), and lines below
+ *                                              its bottom are cut, the last saying so: the box
+ *                                              never leaves the picture, and only it is dimmed
+ *   overlay_draw_label(o, fbo, width, height, text, x, y, content_scale)
+ *                                              one short line in its box with its top-left corner at
+ *                                              pixel (x, y) from the top-left, kept inside the picture
+ *                                              (the window marks a light added with G this way)
  *
  * The runner draws it into the picture the window shows, after the frame was timed and after
  * --screenshot read the picture (unless --overlay asks for it in the screenshot).
@@ -29,6 +38,10 @@ typedef struct overlay {
 
 bool overlay_create(overlay *o);
 void overlay_destroy(overlay *o);
-void overlay_draw(overlay *o, GLuint fbo, int width, int height, const char *text, overlay_corner corner);
+#define OVERLAY_MIN_COLUMNS 64
+void overlay_draw(overlay *o, GLuint fbo, int width, int height, const char *text, overlay_corner corner,
+                  float content_scale);
+void overlay_draw_label(overlay *o, GLuint fbo, int width, int height, const char *text, float x, float y,
+                        float content_scale);
 
 #endif

@@ -18,6 +18,7 @@ static const key_binding table[] = {
     {'G', "G", NULL, KEY_ACTION_ADD_LIGHT, "add a light in front of the camera"},
     {'=', "+", NULL, KEY_ACTION_LIGHTS_DOUBLE, "double the generated lights (as --lights)"},
     {'-', "-", NULL, KEY_ACTION_LIGHTS_HALF, "halve the generated lights"},
+    {KEY_BACKSPACE, "Backspace", NULL, KEY_ACTION_LIGHTS_RESTORE, "the lights the run started with again (after G, + and -)"},
     {'R', "R", NULL, KEY_ACTION_RENDERER, "next renderer (--renderer lists them; every chapter has forward and Forward+)"},
     {'V', "V", NULL, KEY_ACTION_VIEW, "next view (--view lists them: G-buffer targets, debug views)"},
     {'M', "M", NULL, KEY_ACTION_COMPARE, "compare with forward: split screen, difference (beyond 1/255, as a heat map), off"},

@@ -289,6 +289,14 @@ void platform_framebuffer_size(int *width, int *height)
         glfwGetFramebufferSize(state.window, width, height);
 }
 
+float platform_content_scale(void)
+{
+    float x = 1.0f, y = 1.0f;
+    if (state.window)
+        glfwGetWindowContentScale(state.window, &x, &y);
+    return x > 0.0f ? x : 1.0f;
+}
+
 bool platform_should_close(void) { return state.window && glfwWindowShouldClose(state.window); }
 
 bool platform_is_minimised(void)

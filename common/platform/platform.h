@@ -16,6 +16,8 @@
  *                                  asks for it back at platform_time() == when and sleeps at most
  *                                  2 s more
  *   platform_present(fbo, w, h)    copy the app's framebuffer to the window and swap
+ *   platform_content_scale()       the window's content scale (2 on a HiDPI screen that doubles
+ *                                  its pixels; 1 headless): how much larger text must be to read
  *   platform_set_title(text)
  *   platform_set_window_size(w, h) ask for a new window size in screen units (no-op headless)
  *   platform_time()                monotonic seconds
@@ -52,6 +54,7 @@ void platform_poll(void);
 bool platform_minimise(double timeout);
 void platform_restore_at(double when);
 void platform_present(GLuint fbo, int width, int height);
+float platform_content_scale(void);
 void platform_set_title(const char *text);
 void platform_set_window_size(int width, int height);
 double platform_time(void);

@@ -57,3 +57,13 @@ foreach(chapter 07_face_culling 11_clustered 13_msaa)
     set_tests_properties(compare.timing.${chapter} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
   endif()
 endforeach()
+
+# The overlay as a learner reads it: wrapped inside the picture, replaced by F1's list while that
+# shows, naming what each chapter counts (tests/window/run_overlay_fit.sh).
+if(TARGET 07_face_culling AND TARGET 11_clustered)
+  add_test(NAME overlay.fit
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/window/run_overlay_fit.sh $<TARGET_FILE:imgdiff>
+            $<TARGET_FILE:07_face_culling> $<TARGET_FILE:11_clustered>
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(overlay.fit PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+endif()
