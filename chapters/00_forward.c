@@ -106,6 +106,6 @@ static void cleanup(app *a)
     forward_destroy(&state.fwd);
 }
 
-const app_desc chapter_00 = {.cli = &cli, .init = init, .frame = frame, .cleanup = cleanup};
+const app_desc chapter_00 = {.cli = &cli, .init = init, .frame = frame, .cleanup = cleanup, .draws_glass = true};
 
 CHAPTER_MAIN(chapter_00)

@@ -38,6 +38,7 @@ static const char *const scales[] = {"contain", "none", NULL};
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
     .program = "09_spot_lights",
+    .default_scene = "assets/scenes/spots.scene", /* the spots show the lesson; the others have none */
     .summary = "Chapter 09: spot lights, each drawn as a cone volume instead of its sphere.",
     .renderers = renderers,
     .views = views,

@@ -41,6 +41,7 @@ static const char *const sorts[] = {"back-to-front", "none", NULL};
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
     .program = "12_transparency",
+    .default_scene = "assets/scenes/glass.scene", /* the glass shows the lesson; the others have none */
     .summary = "Chapter 12: transparent objects shaded forward with the cluster lists, back to front, over "
                "the deferred frame.",
     .renderers = renderers,
@@ -184,6 +185,6 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-const app_desc chapter_12 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+const app_desc chapter_12 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .draws_glass = true, .key = key};
 
 CHAPTER_MAIN(chapter_12)

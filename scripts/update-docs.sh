@@ -50,8 +50,13 @@ header() { # TITLE
   printf '## %s\n\n| chapter | renderer | median ms | passes (median ms) | shaded pixels |\n|---|---|---:|---|---:|\n' "$1"
 }
 
-# One --bench run as a table row: BINARY ARGS...
-run() { "build/bin/$1" --headless --bench --frames 10 "${@:2}" | row; }
+# One --bench run as a table row: BINARY ARGS... (the default scene by name unless ARGS give one:
+# chapters 09 and 12 open on their lesson's scene)
+run() {
+  local scene=(--scene assets/scenes/default.scene)
+  case " ${*:2} " in *" --scene "*) scene=() ;; esac
+  "build/bin/$1" --headless --bench --frames 10 "${scene[@]}" "${@:2}" | row
+}
 
 # chapter_table TITLE ARGS...: every chapter, deferred then forward (chapter 00: its four renderers).
 chapter_table() {

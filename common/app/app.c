@@ -351,6 +351,10 @@ static int app_setup(app *a, const app_desc *desc)
         return EXIT_CODE_USAGE;
     if (!app_target_make(a) || (desc->init && !desc->init(a)))
         return EXIT_CODE_RUNTIME;
+    if (a->gs.transparent_count > 0 && !desc->draws_glass && !app_renderer_is_forward(a))
+        log_warn("%s: the scene's %d glass object(s) are not drawn by this chapter's %s renderer (chapter 12 adds "
+                 "glass; --renderer forward draws it)",
+                 desc->cli->program, a->gs.transparent_count, a->cli->renderers[a->renderer]);
     return !layout || gbuffer_layout_fits_pass(layout, a->pass_state) ? EXIT_CODE_OK : EXIT_CODE_USAGE;
 }
 
@@ -428,10 +432,10 @@ int app_run(const app_desc *desc, int argc, char **argv)
     data_dir_set(opt.data_dir);
     app a;
     app_init(&a, &cli, &opt);
+    const char *lesson_scene = cli.default_scene ? cli.default_scene : CLI_DEFAULT_SCENE;
     if (!opt.scene_path)
-        opt.scene_path = data_dir_path(CLI_DEFAULT_SCENE, a.default_scene, sizeof a.default_scene)
-                             ? a.default_scene
-                             : CLI_DEFAULT_SCENE;
+        opt.scene_path =
+            data_dir_path(lesson_scene, a.default_scene, sizeof a.default_scene) ? a.default_scene : lesson_scene;
     if (opt.gl_info)
         return app_print_gl_info(&opt, desc->cli->program);
     if ((rc = app_open(&a, desc, &opt)) != EXIT_CODE_OK)

@@ -84,6 +84,8 @@ typedef struct app_desc {
     /* compare mode's forward picture (key M), display-encoded into `target`; NULL: the renderer
      * table's forward (chapter 13: forward MSAA at its own sample count) */
     bool (*draw_forward)(app *a, GLuint target);
+    bool draws_glass; /* its own renderers draw transparent objects (00, 12); if not, the runner says
+                       * once, on stderr, that a scene's glass is left out */
 } app_desc;
 
 int app_run(const app_desc *desc, int argc, char **argv);

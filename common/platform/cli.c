@@ -85,7 +85,7 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --data-dir DIR           the folder with shaders/ and assets/ (default: $COURSE_DATA_DIR,\n"
             "                           else an installed prefix's share/deferred_course, else the\n"
             "                           source tree)\n",
-            CLI_DEFAULT_SCENE);
+            desc->default_scene ? desc->default_scene : CLI_DEFAULT_SCENE);
     if (desc->renderers) {
         fprintf(stream, "  --renderer NAME          ");
         print_choices(stream, desc->renderers);

@@ -42,6 +42,8 @@ typedef struct cli_desc {
     const char *const *views;        /* NULL-terminated or NULL; the first is the default */
     cli_extra extras[CLI_MAX_EXTRAS];
     double default_cutoff;           /* --cutoff's default (app_run sets the lighting model's) */
+    const char *default_scene;       /* the scene that shows the chapter's lesson, relative to the
+                                      * data folder; NULL: CLI_DEFAULT_SCENE */
 } cli_desc;
 
 typedef struct cli_options {

@@ -120,3 +120,33 @@ function(chapter_12_tests)
     PASS_REGULAR_EXPRESSION "unknown --sort value 'front-to-back' \\(one of: back-to-front none\\)")
 endfunction()
 chapter_12_tests()
+
+# Chapters 09 and 12 open on their lesson's scene when --scene is not given: the spots and the glass,
+# the goldens those scenes give with --scene named.
+foreach(pair "09_spot_lights|09_spot_lights_spots" "12_transparency|12_transparency_glass")
+  string(REPLACE "|" ";" pair "${pair}")
+  list(GET pair 0 chapter)
+  list(GET pair 1 golden)
+  if(TARGET ${chapter})
+    add_test(NAME golden.${chapter}_opens_on_its_scene
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/golden/run_golden.sh $<TARGET_FILE:imgdiff> ${COURSE_TEST_OUT}
+              ${chapter}_opens_on_its_scene ${CMAKE_SOURCE_DIR}/tests/golden/${golden}.png 1 0.0001
+              -- $<TARGET_FILE:${chapter}> --headless --size ${COURSE_GOLDEN_SIZE} --frames 1 --gl-debug
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(golden.${chapter}_opens_on_its_scene PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  endif()
+endforeach()
+
+# A chapter that cannot draw glass says so once, on stderr (11 and 13 build on the G-buffer, which
+# holds no glass); chapter 12, which draws it, says nothing.
+if(TARGET 11_clustered AND TARGET 13_msaa AND TARGET 12_transparency)
+  add_test(NAME chapters.glass_left_out_said
+    COMMAND ${BASH} -c "for c in $<TARGET_FILE:11_clustered> $<TARGET_FILE:13_msaa>; do \
+        err=$($c --headless --size 160x120 --frames 3 --scene assets/scenes/glass.scene 2>&1 >/dev/null); rc=$?; \
+        [ $rc -eq 77 ] && exit 77; \
+        [ $(grep -c 'glass object(s) are not drawn' <<<\"$err\") -eq 1 ] || { echo \"FAIL $c: $err\"; exit 1; }; done; \
+      err=$($<TARGET_FILE:12_transparency> --headless --size 160x120 --scene assets/scenes/glass.scene 2>&1 >/dev/null); \
+      grep -q 'glass' <<<\"$err\" && { echo \"FAIL 12 warned: $err\"; exit 1; }; echo ok: said once by 11 and 13, not by 12"
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.glass_left_out_said PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+endif()

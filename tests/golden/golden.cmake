@@ -14,7 +14,10 @@
 
 set(COURSE_GOLDEN_SIZE 320x240)
 set(COURSE_TEST_OUT ${CMAKE_BINARY_DIR}/test-out)
-set(COURSE_RENDER_ARGS --headless --size ${COURSE_GOLDEN_SIZE} --frames 1 --gl-debug)
+# The default scene by name: chapters 09 and 12 open on their lesson's scene (spots, glass) without
+# --scene, and every test says which scene it draws (a test's own --scene comes later and wins).
+set(COURSE_RENDER_ARGS --headless --size ${COURSE_GOLDEN_SIZE} --frames 1 --gl-debug
+    --scene ${CMAKE_SOURCE_DIR}/assets/scenes/default.scene)
 
 function(course_golden_test name binary tolerance fraction)
   add_test(NAME golden.${name}

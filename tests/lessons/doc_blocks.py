@@ -23,11 +23,15 @@ def run(name, mark, pages_glob, expected):
         def replace(m):
             counts["blocks"] += 1
             body = m.group(m.lastindex)
-            want, label = expected(root, m)
+            why = {}
+            got = expected(root, m)
+            want, label = got[0], got[1]
+            if len(got) > 2:
+                why["reason"] = got[2]
             where = f"{page.relative_to(root)}: {label}"
             if want is None:
                 counts["failures"] += 1
-                print(f"FAIL {where}: cannot be made (no such file or section)")
+                print(f"FAIL {where}: cannot be made ({why.get('reason', 'no such file or section')})")
                 return m.group(0)
             if body == want:
                 print(f"ok   {where}")

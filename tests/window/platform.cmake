@@ -20,6 +20,7 @@ if(XVFB_RUN)
               window.${chapter} ${CMAKE_SOURCE_DIR}/tests/golden/${chapter}.png 1 0.0001
               -- ${XVFB_RUN} -a -s "-screen 0 1280x1024x24"
                  $<TARGET_FILE:${chapter}> --size ${COURSE_GOLDEN_SIZE} --frames 3 --paused --gl-debug
+                 --scene ${CMAKE_SOURCE_DIR}/assets/scenes/default.scene
       WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
     set_tests_properties(window.${chapter} PROPERTIES LABELS window SKIP_RETURN_CODE 77 RUN_SERIAL TRUE)
   endforeach()
