@@ -4,6 +4,8 @@ add_test(NAME lessons.first_in_chapter COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests
 find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
 add_test(NAME lessons.what_changed COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/lessons/doc_diffs.py --check ${CMAKE_SOURCE_DIR})
 set_tests_properties(lessons.first_in_chapter lessons.what_changed PROPERTIES LABELS unit)
+# ... and each chapter page's Keys paragraph names M and the chapter's own keys of the key table.
+set_tests_properties(lessons.first_in_chapter PROPERTIES ENVIRONMENT "KEY_TABLE=$<TARGET_FILE:key_table>")
 # Every measured figure a page shows is a verbatim copy of one dated run in docs/data/
 # (scripts/update-docs.sh writes it; tests/lessons/doc_generated.py compares).
 add_test(NAME lessons.generated_figures

@@ -64,4 +64,20 @@ for page in "$root"/docs/[0-9][0-9]_*.md; do
     status=1
   fi
 done
+# Each chapter page from 03 on lists its keys: M (compare with forward) and every key of its own in
+# the key table (common/platform/keys.c, through tools/key_table when the caller gives it).
+if [ -n "${KEY_TABLE:-}" ]; then
+  for page in "$root"/docs/[0-9][0-9]_*.md; do
+    n=$(basename "$page" | cut -c1-2)
+    [ "$n" -lt 3 ] && continue
+    keys=$(awk '/^Keys/ { k = 1 } k { print } k && /^$/ { exit }' "$page" | tr '\n' ' ')
+    own=$("$KEY_TABLE" | awk -F'|' -v n=" $n " '$3 == n { gsub(/[` ]/, "", $2); print $2 }')
+    for key in M $own; do
+      if ! grep -qE -- "\*\*([^*]* )?$key( [^*]*)?\*\*|[ (]$key [a-z]" <<<"$keys"; then
+        echo "FAIL $(basename "$page"): its Keys paragraph does not name $key"
+        status=1
+      fi
+    done
+  done
+fi
 exit $status
