@@ -16,7 +16,8 @@ case " $* " in
   *" --quick "*) sweep="the quick sweep: under a minute" ;;
   *) sweep="the course's sweep: about 3 minutes" ;;
 esac
-echo "== run-all: build (under a minute), 14 screenshots (seconds), then the benchmark ($sweep on 2 cores"
+chapters=$(ls chapters/[0-9][0-9]_*.c | wc -l)
+echo "== run-all: build (under a minute), $chapters screenshots (seconds), then the benchmark ($sweep on 2 cores"
 echo "   with llvmpipe; a GPU is faster). Results: $root/out/"
 start=$SECONDS
 "$root/scripts/build.sh" "$root/build" course
