@@ -29,13 +29,14 @@
 #include "gl_program.h"
 #include "log.h"
 #include "shadow_atlas.h"
+#include "shadow_views.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward-plus", "forward", NULL};
-static const char *const views[] = {"lit", "visibility", NULL};
+static const char *const views[] = {"lit", "visibility", "atlas", "importance", NULL};
 static const char *const formats[] = {"d32f", "d16", NULL};
 static const char *const pcfs[] = {"1", "3", "5", NULL};
 static const char *const switches[] = {"on", "off", NULL};
@@ -57,6 +58,8 @@ static const cli_desc cli = {
             {"shadows", "N", "shadow only the N most important lights (default: all)", NULL, NULL},
             {"shadow-cull", "ON", "draw only the casters that meet the light's sphere and the tile's frustum",
              switches, "on"},
+            {"time-step", "SECONDS", "the scene's time advances this much each frame, headless too (default 0)", NULL,
+             "0"},
         },
 };
 
@@ -69,6 +72,8 @@ static struct {
     clusters c;
     forward fwd;
     GLuint visibility_program; /* --view visibility */
+    shadow_views views;        /* --view atlas, --view importance */
+    double time_step;
 } state;
 
 /* The atlas's options, checked against the context's largest texture. */
@@ -79,7 +84,8 @@ static bool read_options(app *a, shadow_plan_desc *desc, GLenum *format, float *
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
     if (!app_extra_number(a, "shadow-atlas", 256, max_size, &size) || !app_extra_number(a, "normal-offset", 0, 8, &offset) ||
         !app_extra_number(a, "slope-bias", 0, 16, &bias) ||
-        (app_extra(a, "shadows") && !app_extra_number(a, "shadows", 0, 1 << 20, &shadows)))
+        (app_extra(a, "shadows") && !app_extra_number(a, "shadows", 0, 1 << 20, &shadows)) ||
+        !app_extra_number(a, "time-step", 0, 1e3, &state.time_step))
         return false;
     if ((int)size & ((int)size - 1)) {
         log_error("--shadow-atlas %d: must be a power of two", (int)size);
@@ -104,7 +110,8 @@ static bool init(app *a)
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
     a->pass_state = &deferred_pass; /* the overlay shows it */
     state.visibility_program = gl_program_load_extra("fullscreen.vert", "shadow_visibility.frag", NULL, &extra);
-    return state.visibility_program && gbuffer_create(&state.g, a->width, a->height) &&
+    return state.visibility_program && shadow_views_create(&state.views) &&
+           gbuffer_create(&state.g, a->width, a->height) &&
            clusters_create(&state.c, &lists) && forward_create_with(&state.fwd, &extra);
 }
 
@@ -153,15 +160,44 @@ static bool frame_forward(app *a, GLuint target, bool plus)
     return ok;
 }
 
+/* --view atlas, --view importance: the atlas's tiles, or the lights over the picture, each in its
+ * light's importance colour (chapters/shadow_views.c). */
+static bool draw_views(app *a)
+{
+    frame_timer_mark("view");
+    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
+    glViewport(0, 0, a->width, a->height);
+    bool ok = app_view_is(a, "atlas") ? shadow_views_draw_atlas(&state.views, &state.atlas, a->width, a->height)
+                                      : shadow_views_draw_lights(&state.views, &state.atlas, &a->gs, a->width, a->height);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return ok;
+}
+
 static bool frame(app *a)
 {
     /* 1., 2.: the plan and the tiles it says changed; then the frame, which reads them */
     if (!shadow_atlas_update(&state.atlas, &a->gs))
         return false;
+    shadow_views_overlay(&state.atlas, a->overlay_lines, sizeof a->overlay_lines);
+    a->time += (float)state.time_step; /* --time-step: the next frame's time (the window adds its own) */
     a->shaded_pixels = -1;
+    bool ok = true; /* --view atlas shows the atlas alone */
     if (app_renderer_is(a, "deferred") || app_view_is(a, "visibility")) /* the view reads the G-buffer */
-        return frame_deferred(a);
-    return frame_forward(a, a->target.id, app_renderer_is(a, "forward-plus"));
+        ok = frame_deferred(a);
+    else if (!app_view_is(a, "atlas"))
+        ok = frame_forward(a, a->target.id, app_renderer_is(a, "forward-plus"));
+    return ok && (app_view_is(a, "lit") || app_view_is(a, "visibility") || draw_views(a));
+}
+
+/* K: shadows on or off; off, every light is unshadowed and the picture is chapter 11's. */
+static bool key(app *a, int k)
+{
+    (void)a;
+    if (k != 'K')
+        return false;
+    state.atlas.enabled = !state.atlas.enabled;
+    log_info("shadows: %s", state.atlas.enabled ? "on" : "off");
+    return true;
 }
 
 /* Compare mode's left side (key M): chapter 00's forward, reading the same atlas. */
@@ -192,6 +228,7 @@ static void cleanup(app *a)
     if (a->options->bench && state.atlas.depth_program)
         print_report(a);
     gl_program_destroy(&state.visibility_program);
+    shadow_views_destroy(&state.views);
     forward_destroy(&state.fwd);
     clusters_destroy(&state.c);
     gbuffer_destroy(&state.g);
@@ -199,6 +236,6 @@ static void cleanup(app *a)
 }
 
 const app_desc chapter_14 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                             .draw_forward = draw_forward};
+                             .key = key, .draw_forward = draw_forward};
 
 CHAPTER_MAIN(chapter_14)

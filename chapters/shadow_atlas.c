@@ -161,7 +161,7 @@ static bool upload_tables(shadow_atlas *s, int lights)
 
 bool shadow_atlas_update(shadow_atlas *s, const gpu_scene *gs)
 {
-    frame_timer_mark("shadow maps");
+    frame_timer_mark("shadows"); /* the shadow pass: the plan, the tiles drawn, the tables */
     if (!gather(s, gs))
         return false;
     if (s->enabled) {

@@ -10,6 +10,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+float shadow_far_plane(float radius)
+{
+    float far_plane = radius < 1e6f ? radius * 1.01f : 1e6f;
+    return far_plane < 2.0f * SHADOW_NEAR ? 2.0f * SHADOW_NEAR : far_plane;
+}
+
 /* ---- arrays ------------------------------------------------------------------------------------ */
 
 /* *a grown to hold n elements of `size` bytes (new ones zeroed); false (logged) when out of memory. */
@@ -157,9 +163,7 @@ static void tile_matrix(const shadow_light *l, int face, bool spot, float tan_ha
         glm_vec3_copy((float *)ups[face], up);
     }
     glm_vec3_add((float *)l->position, axis, centre);
-    float far_plane = l->radius < 1e6f ? l->radius * 1.01f : 1e6f;
-    if (far_plane < 2.0f * SHADOW_NEAR)
-        far_plane = 2.0f * SHADOW_NEAR;
+    float far_plane = shadow_far_plane(l->radius);
     mat4 view, proj;
     glm_lookat((float *)l->position, centre, up, view);
     glm_perspective(2.0f * atanf(tan_half), 1.0f, SHADOW_NEAR, far_plane, proj);

@@ -19,6 +19,8 @@
  *                                          SHADOW_TIER0_IMPORTANCE, each next tier at half of it; a
  *                                          light leaves its previous tier only when the importance
  *                                          passes the border by the factor SHADOW_HYSTERESIS
+ *   shadow_far_plane(radius)               the far plane of a light's shadow maps: just beyond its
+ *                                          radius (1e6 when infinite), never nearer than 2 x SHADOW_NEAR
  *   shadow_cube_face(d)                    the cube face (+X -X +Y -Y +Z -Z: 0..5) that sees the
  *                                          direction d from the light: its major axis, as
  *                                          shaders/shadows.glsl chooses it
@@ -124,6 +126,7 @@ bool shadow_plan_frame(shadow_plan *p, const vec3 eye, const shadow_light *light
                        int m);
 float shadow_importance(const vec3 eye, const shadow_light *l);
 int shadow_tier(float importance, int previous);
+float shadow_far_plane(float radius);
 int shadow_cube_face(const vec3 d);
 bool shadow_box_meets_sphere(const vec3 lo, const vec3 hi, const vec3 c, float r);
 bool shadow_box_meets_frustum(const vec3 lo, const vec3 hi, mat4 m);

@@ -32,8 +32,8 @@
  * with --screenshot. When a->count_pixels (--bench, or the overlay is on) it counts its lighting
  * pass's fragments with a->query (gl_samples_begin/end) into a->shaded_pixels, and when each of them
  * loops over several lights sets a->lights_per_pixel (their product is the frame's light
- * evaluations); a->pass_state, when it sets it, is shown too. Two requests only an embedding caller
- * makes: a->linear_output asks for linear radiance into a float a->target (a chapter that can sets
+ * evaluations); a->pass_state, when it sets it, is shown too, and so are a->overlay_lines. Two
+ * requests only an embedding caller makes: a->linear_output asks for linear radiance into a float a->target (a chapter that can sets
  * a->linear_written), and a chapter whose frame sums linear radiance before its present pass points
  * a->linear at that buffer.
  */
@@ -71,6 +71,7 @@ typedef struct app {
     bool linear_written; /* the chapter did so this frame */
     const fbo *linear;   /* the chapter's linear sum of this frame (before present), or NULL */
     const gl_pass_state *pass_state; /* the chapter's lighting pass state, shown by the overlay */
+    char overlay_lines[320];         /* the chapter's own overlay lines, set by its frame ("": none) */
     char default_scene[4200]; /* the data folder's default scene, when no --scene was given */
 } app;
 

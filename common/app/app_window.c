@@ -363,6 +363,8 @@ int app_window_overlay_text(const app_window *w, const app *a, bool paused, char
         describe_pass(a->pass_state, pass, sizeof pass);
         put(out, size, &used, "lighting pass: %s\n", pass);
     }
+    if (a->overlay_lines[0]) /* the chapter's own */
+        put(out, size, &used, "%s\n", a->overlay_lines);
     const scene_camera *c = &a->scene.camera;
     put(out, size, &used, "eye %.2f %.2f %.2f  target %.2f %.2f %.2f\n", (double)c->eye[0], (double)c->eye[1],
         (double)c->eye[2], (double)c->target[0], (double)c->target[1], (double)c->target[2]);

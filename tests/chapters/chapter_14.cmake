@@ -23,6 +23,18 @@ function(chapter_14_tests)
   course_golden_test(14_shadows_pcf1 ${C} 1 0.0001 --pcf 1)
   course_golden_test(14_shadows_visibility ${C} 1 0.0001 --scene ${S}/shadow_one_light.scene --view visibility)
   course_golden_test(14_shadows_contact ${C} 1 0.0001 --scene ${S}/shadow_contact.scene)
+  # The window's views of the atlas: each tile's depth in its light's importance colour, and a disc
+  # per light in the same colours over the picture.
+  course_golden_test(14_shadows_atlas ${C} 1 0.0001 --scene ${A}/teapots.scene --view atlas)
+  course_golden_test(14_shadows_importance ${C} 1 0.0001 --scene ${A}/teapots.scene --view importance)
+
+  # The window's K and overlay, driven by a --script: K off is chapter 11's picture and K on again
+  # chapter 14's; the overlay counts the lights and tiles, and times the shadow pass on its own.
+  add_test(NAME window.14_shadow_keys
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/chapters/run_shadow_keys.sh $<TARGET_FILE:imgdiff>
+            ${COURSE_TEST_OUT} $<TARGET_FILE:${C}> $<TARGET_FILE:11_clustered>
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(window.14_shadow_keys PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
 
   # Forward and Forward+ cast the same shadows: the chapter's deferred frame against its forward one,
   # and Forward+ against forward (the same sums in the same order: the same bytes).
