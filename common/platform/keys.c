@@ -46,6 +46,7 @@ static const key_binding table[] = {
     {'L', "L", "10", KEY_ACTION_CHAPTER, "tile lists made by the compute shader or on the CPU (as --path; same picture)"},
     {'L', "L", "11", KEY_ACTION_CHAPTER, "light lists made by compute shaders or on the CPU (as --assign; same picture)"},
     {'O', "O", "12", KEY_ACTION_CHAPTER, "glass order: back to front, or the scene's (wrong)"},
+    {'B', "B", "15", KEY_ACTION_CHAPTER, "light buffer's specular: rgb (two targets, forward's picture) or mono (one channel)"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])
