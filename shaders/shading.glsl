@@ -58,25 +58,31 @@ vec3 safe_normalize(vec3 v, vec3 fallback)
     return len2 > 1e-30 ? v * inversesqrt(len2) : fallback;
 }
 
-// Light i's contribution at p (world space), unit normal n, unit view vector v; C is its cone
-// (light_fetch_cone(i)), NO_CONE for a point light.
-vec3 shade_light(light_data L, light_cone C, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular,
-                 float shininess)
+// What light L brings to p before any material meets it: its factor f (attenuation, window, cone),
+// n.l and the highlight (n.h)^shininess; false where it brings nothing. C is its cone
+// (light_fetch_cone(i)), NO_CONE for a point light; p world space, n and v unit.
+struct light_reach {
+    float f;
+    float ndl;
+    float highlight;
+};
+
+bool shade_light_reach(light_data L, light_cone C, vec3 p, vec3 n, vec3 v, float shininess, out light_reach r)
 {
     vec3 to_light = L.position - p;
     float d = length(to_light);
     if (d > L.radius)
-        return vec3(0.0);
+        return false;
     // A light exactly on the surface (d = 0) lights it head-on, with f(0) = 1 / kc.
     vec3 l = d > 0.0 ? to_light / d : n;
     float ndl = dot(n, l);
     // Both terms vanish when n.l <= 0: no diffuse, and no specular leaking round the terminator.
     if (ndl <= 0.0)
-        return vec3(0.0);
+        return false;
     // Outside the cone: nothing (a point light is never outside).
     float spot = spot_factor(C, l);
     if (spot <= 0.0)
-        return vec3(0.0);
+        return false;
     vec3 h = safe_normalize(l + v, n);
     float f = 1.0 / (L.attenuation.x + (L.attenuation.y + L.attenuation.z * d) * d);
     // Windowed: (1 - (d/r)^4)^2 takes the light to zero, with zero slope, at its radius, so the
@@ -87,7 +93,19 @@ vec3 shade_light(light_data L, light_cone C, vec3 p, vec3 n, vec3 v, vec3 albedo
         f *= w * w;
     }
     f *= spot;
-    return f * L.radiance * (ndl * albedo + specular * pow(max(dot(n, h), 0.0), shininess));
+    r = light_reach(f, ndl, pow(max(dot(n, h), 0.0), shininess));
+    return true;
+}
+
+// Light i's contribution at p (world space), unit normal n, unit view vector v; C is its cone
+// (light_fetch_cone(i)), NO_CONE for a point light.
+vec3 shade_light(light_data L, light_cone C, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular,
+                 float shininess)
+{
+    light_reach r;
+    if (!shade_light_reach(L, C, p, n, v, shininess, r))
+        return vec3(0.0);
+    return r.f * L.radiance * (r.ndl * albedo + specular * r.highlight);
 }
 
 // A point light: the same function without a cone.
@@ -110,6 +128,26 @@ vec3 shade_light_index(int i, vec3 p, vec3 n, vec3 v, vec3 albedo, float specula
         c *= shadow_visibility(i, L.position, p, n);
 #endif
     return c;
+}
+
+// shade_light_index()'s two terms apart, before the material (chapter 15's light buffer), added to
+// diffuse and specular: f E (n.l) and f E (n.h)^shininess, E the light's radiance. shade_light() is
+// albedo * diffuse + specular * specular, up to rounding.
+// Rec. 709 luminance: what ONE specular channel keeps of a light's colour (chapter 15's mono buffer).
+const vec3 LUMINANCE = vec3(0.2126, 0.7152, 0.0722);
+
+void shade_light_terms(int i, vec3 p, vec3 n, vec3 v, float shininess, inout vec3 diffuse, inout vec3 specular)
+{
+    light_data L = light_fetch(i);
+    light_reach r;
+    if (!shade_light_reach(L, light_fetch_cone(i), p, n, v, shininess, r))
+        return;
+    vec3 e = r.f * L.radiance;
+#ifdef SHADOWS
+    e *= shadow_visibility(i, L.position, p, n);
+#endif
+    diffuse += e * r.ndl;
+    specular += e * r.highlight;
 }
 
 vec3 shade_ambient(vec3 albedo)

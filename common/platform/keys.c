@@ -47,6 +47,7 @@ static const key_binding table[] = {
     {'L', "L", "11", KEY_ACTION_CHAPTER, "light lists made by compute shaders or on the CPU (as --assign; same picture)"},
     {'O', "O", "12", KEY_ACTION_CHAPTER, "glass order: back to front, or the scene's (wrong)"},
     {'K', "K", "14", KEY_ACTION_CHAPTER, "shadows on / off (off: every light unshadowed, chapter 11's picture)"},
+    {'B', "B", "15", KEY_ACTION_CHAPTER, "light buffer's specular: rgb (two targets, forward's picture) or mono (one channel)"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])

@@ -50,6 +50,9 @@ expect_first "CLUSTERS_VIEW_LINEAR" 11_clustered.c # the benchmark asks 11 for l
 expect_first "GPU_SCENE_BACK_TO_FRONT" 12_transparency.c
 expect_first "glCheckFramebufferStatus" 01_fbo_setup.c
 expect_first "glDrawBuffers" 02_mrt_gbuffer.c
+expect_first "light_prepass_thin.frag" 15_light_prepass.c
+expect_first "light_prepass_accum.frag" 15_light_prepass.c
+expect_first "light_prepass_combine.frag" 15_light_prepass.c
 # No lesson behind a flag in common/: the old option structs are gone.
 if grep -rn --include='*.[ch]' "light_volumes_options\|overwrite\b" "$root"/common; then
   echo "FAIL a chapter's lesson is selected by an option in common/"

@@ -4,7 +4,7 @@
 # pass; the rest in chapter 07.
 set(COURSE_LEARNER_CHAPTERS)
 foreach(chapter 03_fullscreen_phong 04_light_volumes 05_attenuation_radius 06_additive_blending 08_stencil_volumes
-                09_spot_lights 10_tiled_deferred 11_clustered 12_transparency 13_msaa)
+                09_spot_lights 10_tiled_deferred 11_clustered 12_transparency 13_msaa 15_light_prepass)
   if(TARGET ${chapter})
     list(APPEND COURSE_LEARNER_CHAPTERS $<TARGET_FILE:${chapter}>)
   endif()
