@@ -37,6 +37,10 @@ static double predict_ms(const history *h, int lights)
         return 0.0;
     int n1 = h->n[h->count - 1];
     double m1 = h->ms[h->count - 1];
+    /* At most 4x past the last count measured: a line through two noisy points far below (1 and 16
+     * lights on a busy machine) would predict a flat renderer, Forward+, slow at 256 and skip it. */
+    if (lights > 4 * n1)
+        lights = 4 * n1;
     if (h->count >= 2 && h->n[1] > h->n[0]) {
         /* cost ~ a + b * lights through the last two points (never a falling line) */
         double b = fmax((h->ms[1] - h->ms[0]) / (h->n[1] - h->n[0]), 0.0);
