@@ -42,17 +42,16 @@ bool vis_meshes_create(vis_meshes *vm, const gpu_scene *gs)
     GLint *table = calloc(2 * (size_t)objects + 2, sizeof *table);
     bool ok = vertex_bytes && index_bytes && table;
     if (ok) {
-        vm->vertex_buffer = gl_buffer_create(), vm->vertex_texture = gl_texture_create();
-        vm->index_buffer = gl_buffer_create(), vm->index_texture = gl_texture_create();
-        vm->object_buffer = gl_buffer_create(), vm->object_texture = gl_texture_create();
-        concatenate(gs, false, vm->vertex_buffer, vm->vertex_texture, GL_R32F, vertex_bytes);
-        concatenate(gs, true, vm->index_buffer, vm->index_texture, GL_R32UI, index_bytes);
+        for (int i = 0; i < VIS_TABLES; i++)
+            vm->buffer[i] = gl_buffer_create(), vm->texture[i] = gl_texture_create();
+        concatenate(gs, false, vm->buffer[VIS_VERTICES], vm->texture[VIS_VERTICES], GL_R32F, vertex_bytes);
+        concatenate(gs, true, vm->buffer[VIS_INDICES], vm->texture[VIS_INDICES], GL_R32UI, index_bytes);
         for (int o = 0; o < objects; o++) { /* bytes to entries: indices, then vertices */
             int m = gs->src->objects[o].mesh;
             table[2 * o] = index_bytes[m] / (GLint)sizeof(GLuint);
             table[2 * o + 1] = vertex_bytes[m] / (GLint)(MESH_VERTEX_FLOATS * sizeof(float));
         }
-        gl_texture_buffer_upload(vm->object_buffer, vm->object_texture, GL_RG32I, table,
+        gl_texture_buffer_upload(vm->buffer[VIS_OBJECTS], vm->texture[VIS_OBJECTS], GL_RG32I, table,
                                  (2 * (size_t)objects + 2) * sizeof *table);
     } else {
         log_error("16: out of memory for %d meshes' tables", meshes);
@@ -65,17 +64,15 @@ bool vis_meshes_create(vis_meshes *vm, const gpu_scene *gs)
 
 void vis_meshes_destroy(vis_meshes *vm)
 {
-    gl_texture_destroy(&vm->object_texture);
-    gl_buffer_destroy(&vm->object_buffer);
-    gl_texture_destroy(&vm->index_texture);
-    gl_buffer_destroy(&vm->index_buffer);
-    gl_texture_destroy(&vm->vertex_texture);
-    gl_buffer_destroy(&vm->vertex_buffer);
+    for (int i = 0; i < VIS_TABLES; i++) {
+        gl_texture_destroy(&vm->texture[i]);
+        gl_buffer_destroy(&vm->buffer[i]);
+    }
 }
 
 void vis_meshes_bind(const vis_meshes *vm, GLuint program, int unit)
 {
-    gl_texture_buffer_bind(program, "u_vertices", unit, vm->vertex_texture);
-    gl_texture_buffer_bind(program, "u_indices", unit + 1, vm->index_texture);
-    gl_texture_buffer_bind(program, "u_object_meshes", unit + 2, vm->object_texture);
+    static const char *const names[VIS_TABLES] = {"u_vertices", "u_indices", "u_object_meshes"};
+    for (int i = 0; i < VIS_TABLES; i++)
+        gl_texture_buffer_bind(program, names[i], unit + i, vm->texture[i]);
 }

@@ -12,10 +12,16 @@
 
 #include "gpu_scene.h"
 
+/* The three tables, each a buffer seen through a texture buffer. */
+enum {
+    VIS_VERTICES, /* R32F: MESH_VERTEX_FLOATS per vertex (position, normal), every mesh's */
+    VIS_INDICES,  /* R32UI: each mesh's indices as its own buffer holds them */
+    VIS_OBJECTS,  /* RG32I per object: its mesh's first index, first vertex */
+    VIS_TABLES
+};
+
 typedef struct vis_meshes {
-    GLuint vertex_buffer, vertex_texture; /* R32F: MESH_VERTEX_FLOATS per vertex (position, normal) */
-    GLuint index_buffer, index_texture;   /* R32UI: each mesh's indices as its own buffer holds them */
-    GLuint object_buffer, object_texture; /* RG32I per object: its mesh's first index, first vertex */
+    GLuint buffer[VIS_TABLES], texture[VIS_TABLES];
 } vis_meshes;
 
 bool vis_meshes_create(vis_meshes *vm, const gpu_scene *gs);
