@@ -59,10 +59,13 @@ static struct {
     GLuint visibility_program, shading_program;
 } state;
 
-/* Before init: a scene whose ids would not fit the 32 bits is refused, with the limit it breaks. */
+/* Before init: a scene whose ids would not fit the 32 bits is refused, with the limit it breaks (the
+ * forward renderers have no ids). */
 static bool accepts_scene(const app *a)
 {
     const gpu_scene *gs = &a->gs;
+    if (!app_renderer_is(a, "deferred"))
+        return true;
     if (gs->src->object_count > VIS_MAX_OBJECTS) {
         log_error("%s: %d objects; the visibility buffer's ids hold at most %ld (%d bits of object)", gs->src->path,
                   gs->src->object_count, VIS_MAX_OBJECTS, 32 - SHADER_VIS_TRIANGLE_BITS);
