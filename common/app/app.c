@@ -341,6 +341,8 @@ static int app_setup(app *a, const app_desc *desc)
         return EXIT_CODE_USAGE;
     if (!gpu_scene_create(&a->scene, &a->gs))
         return EXIT_CODE_USAGE; /* a model file that cannot be loaded is an input error */
+    if (desc->accepts_scene && !desc->accepts_scene(a))
+        return EXIT_CODE_USAGE; /* a scene beyond the chapter's limits is an input error too */
     a->query = gl_query_create();
     if (!frame_timer_create(&a->timer))
         return EXIT_CODE_RUNTIME;

@@ -77,6 +77,8 @@ typedef struct app {
 
 typedef struct app_desc {
     const cli_desc *cli;            /* its command line (--help prints it) */
+    bool (*accepts_scene)(const app *a); /* optional: the scene (a->gs) fits the chapter's limits;
+                                          * false (the chapter logs why): exit 2, before init */
     bool (*init)(app *a);           /* GL resources; target exists */
     bool (*resize)(app *a);         /* after the target was recreated at a->width x a->height */
     bool (*frame)(app *a);          /* draw into a->target */

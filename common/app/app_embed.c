@@ -94,7 +94,8 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
         a->scene = *gs->src; /* a view of the caller's scene: never destroyed here */
         a->gs = *gs;
         a->query = gl_query_create();
-        ok = app_target_make(a) && (!desc->init || (e->have_init = desc->init(a)));
+        ok = (!desc->accepts_scene || desc->accepts_scene(a)) && app_target_make(a) &&
+             (!desc->init || (e->have_init = desc->init(a)));
     }
     if (!ok) {
         app_embed_close(e);

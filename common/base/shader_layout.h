@@ -13,6 +13,8 @@
  *                            count per fragment and the heat map's saturation count
  *   texture units:           where each pass binds its textures (GLSL 3.30 has no binding layout)
  *   G-buffer encodings:      how a layout's RT1 holds the normal (common/render/gbuffer.h lists the layouts)
+ *   visibility ids (chapter 16):  one R32UI per pixel, the object + 1 above VIS_TRIANGLE_BITS bits of
+ *                            triangle (its index in its mesh, gl_PrimitiveID)
  *   shadow tables (chapter 14, shaders/shadows.glsl): per light one texel (first tile or -1, faces 1 or 6,
  *                            normal offset in texels, PCF taps per side); per tile SHADOW_TILE_TEXELS
  */
@@ -57,7 +59,10 @@
     X(UNIT_SHADOW_LIGHTS, 9) /* per light: first tile, faces, tile size in texels, gutter */               \
     X(UNIT_SHADOW_TILES, 10) /* per tile: its light-space matrix, its place in the atlas */                \
     X(SHADOW_TILE_TEXELS, 5) /* matrix columns 0-3, then (x, y, size in texels, tan of half the field) */  \
-    X(SHADOW_MAX_PCF, 5)     /* the widest PCF kernel: 5 x 5 taps */
+    X(SHADOW_MAX_PCF, 5)     /* the widest PCF kernel: 5 x 5 taps */                                   \
+    X(UNIT_VIS_MESHES, 11)   /* chapter 16: vertices, indices, object -> mesh: three units */           \
+    X(MESH_VERTEX_FLOATS, 6) /* a vertex: position xyz, normal xyz (common/scene/mesh_data.h) */       \
+    X(VIS_TRIANGLE_BITS, 20) /* chapter 16's id: (object + 1) << 20 | triangle; 0 is the background */
 
 #define SHADER_LAYOUT_ENUM(name, value) SHADER_##name = (value),
 enum { SHADER_LAYOUT(SHADER_LAYOUT_ENUM) };

@@ -18,11 +18,12 @@
 #define COMMON_MESH_DATA_H
 
 #include "scene.h"
+#include "shader_layout.h"
 
 #include <stdbool.h>
 #include <stdint.h>
 
-#define MESH_VERTEX_FLOATS 6
+#define MESH_VERTEX_FLOATS SHADER_MESH_VERTEX_FLOATS /* written once: chapter 16's shader reads them */
 
 typedef struct mesh_data {
     float *vertices;

@@ -1,0 +1,177 @@
+/* 16_visibility_buffer.c - the visibility buffer (Burns and Hunt 2013): the geometry pass writes no
+ * surface at all, only WHICH triangle each pixel sees, one 32-bit id, and depth. The shading pass
+ * reads the id, fetches that triangle's three vertices, rebuilds where the pixel's ray meets it and
+ * shades. Compare with chapter 11, whose G-buffer pass this chapter replaces (12 bytes + depth a
+ * pixel for chapter 02's compact layout, here 4 + depth) and whose cluster lists it shades with.
+ *
+ * Taken over: chapter 11's cluster lists and clustered shading (chapter_11_assign, clusters.glsl's
+ * cluster_shade: shade_light() for every light of the pixel's cluster), forward.vert's instanced
+ * draws and its invariant position (00), the full-screen pass (03).
+ * New here, three passes:
+ *   1. visibility pass (visibility.frag): every opaque object once into ONE R32UI target and the
+ *      picture's own depth (a->target's texture, shared): id = (object + 1) << 20 | triangle, the
+ *      triangle's index in its mesh (gl_PrimitiveID); 0 is the background. 8 bytes a pixel.
+ *      Limits, checked when the scene is loaded (exit 2 beyond them): 4,095 objects, 2^20 =
+ *      1,048,576 triangles per mesh (SHADER_VIS_TRIANGLE_BITS, common/base/shader_layout.h)
+ *   2. light assignment: chapter 11's, unchanged
+ *   3. shading (visibility_shade.frag): one full-screen pass; each pixel fetches its triangle's
+ *      vertices (vis_meshes.c: every mesh's buffers copied into texture buffers), intersects its ray
+ *      with the triangle for the barycentrics, interpolates position and normal, and loops over its
+ *      cluster's lights
+ * Views: lit; ids, a colour per id (hashed). Glass (chapter 12) is not drawn: the ids hold one
+ * surface a pixel.
+ * Read docs/16_visibility_buffer.md alongside.
+ */
+#include "app.h"
+#include "chapters.h"
+#include "clusters.h"
+#include "frame_timer.h"
+#include "gl_program.h"
+#include "gl_util.h"
+#include "log.h"
+#include "vis_meshes.h"
+
+static const char *const renderers[] = {"deferred", "forward", NULL};
+static const char *const views[] = {"lit", "ids", NULL};
+
+/* What this chapter adds to the shared command line (--help prints it). */
+static const cli_desc cli = {
+    .program = "16_visibility_buffer",
+    .summary = "Chapter 16: the visibility buffer: a triangle id per pixel, then one full-screen pass that "
+               "fetches the triangle, rebuilds the surface and shades with chapter 11's cluster lists.",
+    .renderers = renderers,
+    .views = views,
+};
+
+/* 1. visibility pass: chapter 00's pre-pass state (GL_LEQUAL: on a tie the object drawn last wins). */
+static const gl_pass_state visibility_pass = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
+/* 3. shading: every pixel written once; no blending, no depth test. */
+static const gl_pass_state shading_pass = {.depth_write = false};
+
+/* The id's two fields: the object + 1 above, the triangle below (0 stays the background). */
+#define VIS_MAX_TRIANGLES (1L << SHADER_VIS_TRIANGLE_BITS)
+#define VIS_MAX_OBJECTS ((1L << (32 - SHADER_VIS_TRIANGLE_BITS)) - 1)
+
+static struct {
+    fbo ids; /* R32UI ids; depth: a->target's */
+    vis_meshes meshes;
+    clusters c;
+    GLuint visibility_program, shading_program;
+} state;
+
+/* Before init: a scene whose ids would not fit the 32 bits is refused, with the limit it breaks (the
+ * forward renderers have no ids). */
+static bool accepts_scene(const app *a)
+{
+    const gpu_scene *gs = &a->gs;
+    if (!app_renderer_is(a, "deferred"))
+        return true;
+    if (gs->src->object_count > VIS_MAX_OBJECTS) {
+        log_error("%s: %d objects; the visibility buffer's ids hold at most %ld (%d bits of object)", gs->src->path,
+                  gs->src->object_count, VIS_MAX_OBJECTS, 32 - SHADER_VIS_TRIANGLE_BITS);
+        return false;
+    }
+    for (int m = 0; m < gs->src->mesh_count; m++)
+        if (gs->meshes[m].index_count / 3 > VIS_MAX_TRIANGLES) {
+            log_error("%s: mesh '%s' has %d triangles; the visibility buffer's ids hold at most %ld a mesh "
+                      "(%d bits of triangle)",
+                      gs->src->path, gs->src->meshes[m].name, gs->meshes[m].index_count / 3, VIS_MAX_TRIANGLES,
+                      SHADER_VIS_TRIANGLE_BITS);
+            return false;
+        }
+    return true;
+}
+
+static bool init(app *a)
+{
+    a->pass_state = &shading_pass; /* the overlay shows it */
+    const clusters_desc lists = {.compute = gl_have_compute()}; /* chapter 11's default */
+    state.visibility_program = gl_program_load("forward.vert", "visibility.frag", NULL);
+    state.shading_program = gl_program_load("fullscreen.vert", "visibility_shade.frag", NULL);
+    return state.visibility_program && state.shading_program && vis_meshes_create(&state.meshes, &a->gs) &&
+           clusters_create(&state.c, &lists);
+}
+
+/* The id target on the picture's depth texture: made when missing, remade when either changed. */
+static bool targets_follow(const app *a)
+{
+    const fbo *t = &a->target;
+    if (state.ids.id && state.ids.depth == t->depth && state.ids.width == t->width && state.ids.height == t->height)
+        return true;
+    fbo_destroy(&state.ids);
+    const fbo_desc ids = {.color_formats = {GL_R32UI}, .color_count = 1, .depth_format = GL_DEPTH_COMPONENT32F,
+                          .shared_depth = t->depth, .name = "visibility buffer"};
+    return fbo_create(&state.ids, &ids, t->width, t->height);
+}
+
+static bool resize(app *a) { return targets_follow(a); }
+
+/* 1. visibility pass: every opaque object once; an id and a depth per pixel, nothing else. */
+static bool draw_visibility(const gpu_scene *gs)
+{
+    static const GLuint background[4] = {0, 0, 0, 0};
+    frame_timer_mark("visibility pass");
+    glBindFramebuffer(GL_FRAMEBUFFER, state.ids.id);
+    glViewport(0, 0, state.ids.width, state.ids.height);
+    gl_pass_state_apply(&visibility_pass);
+    glClearBufferuiv(GL_COLOR, 0, background); /* an integer target: glClearColor does not apply */
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glUseProgram(state.visibility_program);
+    gpu_scene_bind_objects(gs, state.visibility_program, SHADER_UNIT_OBJECTS);
+    gpu_scene_draw(gs, state.visibility_program);
+    gl_pass_state_reset();
+    return gl_check("16 visibility pass");
+}
+
+/* 3. shading: per pixel, its triangle rebuilt from the id and its cluster's lights. */
+static bool shade(app *a)
+{
+    const GLuint p = state.shading_program;
+    const gpu_scene *gs = &a->gs;
+    frame_timer_mark("shading");
+    glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
+    glViewport(0, 0, a->width, a->height);
+    gl_pass_state_apply(&shading_pass);
+    clusters_use(&state.c, gs, p, a->linear_output ? CLUSTERS_VIEW_LINEAR : CLUSTERS_VIEW_LIT);
+    gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS);
+    vis_meshes_bind(&state.meshes, p, SHADER_UNIT_VIS_MESHES);
+    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_GBUFFER);
+    glBindTexture(GL_TEXTURE_2D, state.ids.color[0]);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(glGetUniformLocation(p, "u_ids"), SHADER_UNIT_GBUFFER);
+    glUniformMatrix4fv(glGetUniformLocation(p, "u_inv_view_proj"), 1, GL_FALSE, (const float *)gs->view.inv_view_proj);
+    glUniform2f(glGetUniformLocation(p, "u_viewport_size"), (float)a->width, (float)a->height);
+    glUniform1i(glGetUniformLocation(p, "u_show_ids"), app_view_is(a, "ids"));
+    gl_samples_begin(a->query, a->count_pixels);
+    gl_draw_fullscreen();
+    a->shaded_pixels = gl_samples_end(a->query, a->count_pixels);
+    gl_pass_state_reset();
+    return gl_check("16 shading");
+}
+
+static bool frame(app *a)
+{
+    if (!app_renderer_is(a, "deferred"))
+        return app_render_forward(a);
+    a->pass_state = &shading_pass;
+    a->work_name = "shading pass pixels";
+    if (!targets_follow(a) || !draw_visibility(&a->gs) || !chapter_11_assign(&state.c, &a->gs) || !shade(a))
+        return false;
+    a->linear_written = a->linear_output;
+    return true;
+}
+
+static void cleanup(app *a)
+{
+    (void)a;
+    clusters_destroy(&state.c);
+    vis_meshes_destroy(&state.meshes);
+    fbo_destroy(&state.ids);
+    gl_program_destroy(&state.shading_program);
+    gl_program_destroy(&state.visibility_program);
+}
+
+const app_desc chapter_16 = {
+    .cli = &cli, .accepts_scene = accepts_scene, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+
+CHAPTER_MAIN(chapter_16)

@@ -1,0 +1,107 @@
+#version 330 core
+// visibility_shade.frag - chapter 16's shading pass: one full-screen triangle. Each pixel reads its
+// id, fetches the triangle's three vertices (vis_meshes: positions and normals, object space), puts
+// them in the world with the object's matrices, intersects the pixel's ray from the eye with the
+// triangle (Moller-Trumbore: the barycentrics of the hit, perspective-correct by construction),
+// interpolates position and normal as the rasterizer would have, and shades with chapter 11's
+// cluster lists. u_show_ids: a colour per id instead (hashed).
+#include "shading.glsl"
+#include "heat.glsl"
+#include "clusters.glsl"
+
+uniform usampler2D u_ids;            // R32UI: (object + 1) << SHADER_VIS_TRIANGLE_BITS | triangle
+uniform samplerBuffer u_objects;     // forward.vert's object texels (common/base/shader_layout.h)
+uniform samplerBuffer u_vertices;    // R32F: position xyz, normal xyz per vertex, every mesh
+uniform usamplerBuffer u_indices;    // R32UI: every mesh's indices, each relative to its mesh
+uniform isamplerBuffer u_object_meshes; // per object: its mesh's first index, first vertex
+uniform mat4 u_inv_view_proj;
+uniform vec2 u_viewport_size;
+uniform vec3 u_eye;
+uniform bool u_show_ids;
+uniform int u_view_mode;      // set by clusters_use: SHADER_VIEW_LIT, or the linear picture's
+uniform bool u_output_linear; // linear radiance for a float target (the benchmark)
+
+out vec4 o_color;
+
+struct vertex {
+    vec3 position, normal; // object space
+};
+
+vertex vertex_fetch(int object, int triangle, int corner)
+{
+    ivec2 mesh = texelFetch(u_object_meshes, object).xy;
+    int i = mesh.y + int(texelFetch(u_indices, mesh.x + 3 * triangle + corner).r);
+    int f = SHADER_MESH_VERTEX_FLOATS * i;
+    vertex v;
+    v.position = vec3(texelFetch(u_vertices, f).r, texelFetch(u_vertices, f + 1).r, texelFetch(u_vertices, f + 2).r);
+    v.normal = vec3(texelFetch(u_vertices, f + 3).r, texelFetch(u_vertices, f + 4).r, texelFetch(u_vertices, f + 5).r);
+    return v;
+}
+
+// The hit of the ray o + t d with triangle (a, b, c): its barycentrics (1 - u - v, u, v). A triangle
+// seen edge-on (det near 0) has no stable answer; its few pixels take the clamped values.
+vec3 ray_barycentrics(vec3 o, vec3 d, vec3 a, vec3 b, vec3 c)
+{
+    vec3 e1 = b - a, e2 = c - a;
+    vec3 p = cross(d, e2);
+    float det = dot(e1, p);
+    if (abs(det) < 1e-12)
+        return vec3(1.0 / 3.0);
+    vec3 s = o - a;
+    float u = dot(s, p) / det;
+    float v = dot(d, cross(s, e1)) / det;
+    vec2 uv = clamp(vec2(u, v), 0.0, 1.0);
+    uv /= max(1.0, uv.x + uv.y);
+    return vec3(1.0 - uv.x - uv.y, uv);
+}
+
+// A colour per id (a 32-bit integer hash, lowbias32).
+vec3 id_colour(uint id)
+{
+    id ^= id >> 16; id *= 0x7feb352du; id ^= id >> 15; id *= 0x846ca68bu; id ^= id >> 16;
+    return vec3(uvec3(id, id >> 8, id >> 16) & 255u) / 255.0;
+}
+
+void main()
+{
+    uint id = texelFetch(u_ids, ivec2(gl_FragCoord.xy), 0).r;
+    if (id == 0u) {
+        o_color = vec4(0.0, 0.0, 0.0, 1.0); // forward's clear colour
+        return;
+    }
+    if (u_show_ids) {
+        o_color = vec4(id_colour(id), 1.0);
+        return;
+    }
+    int object = int(id >> SHADER_VIS_TRIANGLE_BITS) - 1;
+    int triangle = int(id & ((1u << SHADER_VIS_TRIANGLE_BITS) - 1u));
+    int t = SHADER_OBJECT_TEXELS * object;
+    mat4 model = mat4(texelFetch(u_objects, t), texelFetch(u_objects, t + 1), texelFetch(u_objects, t + 2),
+                      texelFetch(u_objects, t + 3));
+    int n = t + SHADER_OBJECT_TEXEL_NORMAL;
+    mat3 normal_matrix = mat3(texelFetch(u_objects, n).xyz, texelFetch(u_objects, n + 1).xyz,
+                              texelFetch(u_objects, n + 2).xyz);
+    vec4 material = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MATERIAL);
+    float shininess = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_SHININESS).r;
+
+    vertex v0 = vertex_fetch(object, triangle, 0), v1 = vertex_fetch(object, triangle, 1),
+           v2 = vertex_fetch(object, triangle, 2);
+    vec3 a = (model * vec4(v0.position, 1.0)).xyz, b = (model * vec4(v1.position, 1.0)).xyz,
+         c = (model * vec4(v2.position, 1.0)).xyz;
+    // the ray from the eye through the pixel's centre (its far-plane point, unprojected)
+    vec4 far_point = u_inv_view_proj * vec4((gl_FragCoord.xy / u_viewport_size) * 2.0 - 1.0, 1.0, 1.0);
+    vec3 d = far_point.xyz / far_point.w - u_eye;
+    vec3 w = ray_barycentrics(u_eye, d, a, b, c);
+    vec3 p = w.x * a + w.y * b + w.z * c;
+    vec3 normal = safe_normalize(normal_matrix * (w.x * v0.normal + w.y * v1.normal + w.z * v2.normal),
+                                 vec3(0.0, 1.0, 0.0));
+
+    float depth = cluster_view_depth(p);
+    ivec2 range = cluster_range(cluster_index(gl_FragCoord.xy, depth));
+    vec3 col = vec3(0.0);
+    if (u_view_mode == SHADER_VIEW_LIT) {
+        vec3 view = safe_normalize(u_eye - p, normal);
+        col = cluster_shade(range, p, normal, view, material.rgb, material.a, shininess);
+    }
+    o_color = cluster_output(u_view_mode, u_output_linear, range, depth, col);
+}
