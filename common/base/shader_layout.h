@@ -57,7 +57,11 @@
     X(UNIT_SHADOW_LIGHTS, 9) /* per light: first tile, faces, tile size in texels, gutter */               \
     X(UNIT_SHADOW_TILES, 10) /* per tile: its light-space matrix, its place in the atlas */                \
     X(SHADOW_TILE_TEXELS, 5) /* matrix columns 0-3, then (x, y, size in texels, tan of half the field) */  \
-    X(SHADOW_MAX_PCF, 5)     /* the widest PCF kernel: 5 x 5 taps */
+    X(SHADOW_MAX_PCF, 5)     /* the widest PCF kernel: 5 x 5 taps */                                 \
+    X(UNIT_AO, 11)           /* chapter 17: the ambient occlusion the ambient term reads */               \
+    X(AO_MAX_SAMPLES, 64)    /* the most SSAO kernel directions (--ao-samples) */                          \
+    X(AO_STEPS, 4)           /* points marched along each kernel direction, r/4 apart */                    \
+    X(AO_NOISE_SIZE, 4)      /* the rotation noise tile: 4 x 4 pixels, removed by a blur that wide */
 
 #define SHADER_LAYOUT_ENUM(name, value) SHADER_##name = (value),
 enum { SHADER_LAYOUT(SHADER_LAYOUT_ENUM) };
