@@ -9,8 +9,8 @@
  * as forward's depth-normal pre-pass; chapter 00's forward renderer, with the same define.
  * New here, two full-screen passes between the geometry and the lighting:
  *   1. SSAO (ssao.frag): per pixel, --ao-samples directions in the hemisphere around its normal,
- *      cosine-weighted (the kernel, made here with the course's rng), turned by an angle from a 4 x 4
- *      noise tile (also made here), each marched in SHADER_AO_STEPS points up to --ao-radius against
+ *      cosine-weighted (the kernel, made with the course's rng: chapters/ssao_kernel.c), turned by an
+ *      angle from a 4 x 4 noise tile (made there too), each marched in SHADER_AO_STEPS points up to --ao-radius against
  *      the depth buffer; the share of open directions
  *   2. blur (ssao_blur.frag): a 2N x 2N window (--ao-blur N; 2 covers the noise tile), only the
  *      neighbours on the same surface (depth- and normal-aware), so edges do not bleed
@@ -28,9 +28,8 @@
 #include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
-#include "rng.h"
+#include "ssao_kernel.h"
 
-#include <math.h>
 #include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
@@ -72,44 +71,6 @@ static struct {
     bool on;
 } state;
 
-/* The kernel: u_samples unit directions, cosine-weighted about z (the normal), stratified in the
- * cosine so that even 4 directions span the hemisphere. */
-static void make_kernel(rng *r)
-{
-    for (int i = 0; i < state.samples; i++) {
-        double u = (i + rng_unit(r)) / state.samples, phi = 2.0 * GLM_PI * rng_unit(r);
-        double s = sqrt(u);
-        state.kernel[i][0] = (float)(s * cos(phi)), state.kernel[i][1] = (float)(s * sin(phi));
-        state.kernel[i][2] = (float)sqrt(1.0 - u);
-    }
-}
-
-/* The noise tile: each pixel's turn about its normal, the 16 angles of a circle in a random order. */
-static GLuint make_noise(rng *r)
-{
-    enum { N = SHADER_AO_NOISE_SIZE * SHADER_AO_NOISE_SIZE };
-    int order[N];
-    float turns[N][2];
-    for (int i = 0; i < N; i++)
-        order[i] = i;
-    for (int i = N - 1; i > 0; i--) {
-        int j = rng_below(r, i + 1), t = order[i];
-        order[i] = order[j], order[j] = t;
-    }
-    for (int i = 0; i < N; i++) {
-        double angle = 2.0 * GLM_PI * (order[i] + 0.5) / N;
-        turns[i][0] = (float)cos(angle), turns[i][1] = (float)sin(angle);
-    }
-    GLuint t;
-    glGenTextures(1, &t);
-    glBindTexture(GL_TEXTURE_2D, t);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, SHADER_AO_NOISE_SIZE, SHADER_AO_NOISE_SIZE, 0, GL_RG, GL_FLOAT, turns);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    return t;
-}
-
 /* What the shading programs built with AMBIENT_OCCLUSION read: the occlusion the blur left. */
 static void bind_occlusion(GLuint program, const void *user)
 {
@@ -131,8 +92,8 @@ static bool init(app *a)
     state.radius = (float)radius, state.samples = (int)samples, state.blur = (int)blur;
     state.on = strcmp(app_extra(a, "ssao"), "on") == 0;
     rng r = rng_seed(17);
-    make_kernel(&r);
-    state.noise = make_noise(&r);
+    ssao_kernel_make(&r, state.samples, state.kernel);
+    state.noise = ssao_noise_create(&r);
     /* chapter 11's lists where it makes them by default; its programs and forward's read the occlusion */
     const gl_program_extra extra = {.defines = "AMBIENT_OCCLUSION 1", .bind = bind_occlusion};
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
@@ -140,7 +101,7 @@ static bool init(app *a)
     state.ssao_program = gl_program_load("fullscreen.vert", "ssao.frag", NULL);
     state.blur_program = gl_program_load("fullscreen.vert", "ssao_blur.frag", NULL);
     state.prepass_program = gl_program_load("forward.vert", "light_prepass_thin.frag", NULL);
-    return state.ssao_program && state.blur_program && state.prepass_program &&
+    return state.noise && state.ssao_program && state.blur_program && state.prepass_program &&
            gbuffer_create(&state.g, a->width, a->height) && clusters_create(&state.c, &lists) &&
            forward_create_with(&state.fwd, &extra);
 }
