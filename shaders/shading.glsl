@@ -150,6 +150,7 @@ void shade_light_terms(int i, vec3 p, vec3 n, vec3 v, float shininess, inout vec
     specular += e * r.highlight;
 }
 
+// fragment only: AMBIENT_OCCLUSION
 #ifdef AMBIENT_OCCLUSION
 // Chapter 17: the share of the ambient light that reaches this pixel's surface (SSAO, blurred), in
 // the picture's own pixel grid. It scales the ambient term only: the lights' direct terms already
