@@ -150,8 +150,21 @@ void shade_light_terms(int i, vec3 p, vec3 n, vec3 v, float shininess, inout vec
     specular += e * r.highlight;
 }
 
+// fragment only: AMBIENT_OCCLUSION
+#ifdef AMBIENT_OCCLUSION
+// Chapter 17: the share of the ambient light that reaches this pixel's surface (SSAO, blurred), in
+// the picture's own pixel grid. It scales the ambient term only: the lights' direct terms already
+// know where they come from (docs/17_ssao.md says why).
+uniform sampler2D u_ao;
+uniform bool u_ao_on;
+#endif
+
 vec3 shade_ambient(vec3 albedo)
 {
+#ifdef AMBIENT_OCCLUSION
+    if (u_ao_on)
+        return u_ambient * albedo * texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
+#endif
     return u_ambient * albedo;
 }
 

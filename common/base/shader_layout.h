@@ -62,7 +62,11 @@
     X(SHADOW_MAX_PCF, 5)     /* the widest PCF kernel: 5 x 5 taps */                                   \
     X(UNIT_VIS_MESHES, 11)   /* chapter 16: vertices, indices, object -> mesh: three units */           \
     X(MESH_VERTEX_FLOATS, 6) /* a vertex: position xyz, normal xyz (common/scene/mesh_data.h) */       \
-    X(VIS_TRIANGLE_BITS, 20) /* chapter 16's id: (object + 1) << 20 | triangle; 0 is the background */
+    X(VIS_TRIANGLE_BITS, 20) /* chapter 16's id: (object + 1) << 20 | triangle; 0 is the background */ \
+    X(UNIT_AO, 14)           /* chapter 17: the ambient occlusion the ambient term reads */            \
+    X(AO_MAX_SAMPLES, 64)    /* the most SSAO kernel directions (--ao-samples) */                      \
+    X(AO_STEPS, 4)           /* points marched along each kernel direction, r/4 apart */               \
+    X(AO_NOISE_SIZE, 4)      /* the rotation noise tile: 4 x 4 pixels, removed by a blur that wide */
 
 #define SHADER_LAYOUT_ENUM(name, value) SHADER_##name = (value),
 enum { SHADER_LAYOUT(SHADER_LAYOUT_ENUM) };

@@ -56,6 +56,9 @@ expect_first "light_prepass_combine.frag" 15_light_prepass.c
 expect_first '"visibility.frag"' 16_visibility_buffer.c # the quote: not 14's shadow_visibility.frag
 expect_first "visibility_shade.frag" 16_visibility_buffer.c
 expect_first "glClearBufferuiv" 16_visibility_buffer.c
+expect_first "ssao.frag" 17_ssao.c
+expect_first "ssao_blur.frag" 17_ssao.c
+expect_first "AMBIENT_OCCLUSION" 17_ssao.c
 # No lesson behind a flag in common/: the old option structs are gone.
 if grep -rn --include='*.[ch]' "light_volumes_options\|overwrite\b" "$root"/common; then
   echo "FAIL a chapter's lesson is selected by an option in common/"

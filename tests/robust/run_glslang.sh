@@ -7,7 +7,8 @@
 #     VALUE" pairs separated by commas, or "-" for no defines), and in no other;
 #   - any other shader without defines, then with each macro it tests with #ifdef or defined()
 #     defined to 1 on its own, and with each value of shader_layout.h that an "#if NAME == ..."
-#     compares it with.
+#     compares it with; a macro named on a line "// fragment only: NAME ..." of an included file
+#     (it reads gl_FragCoord) is tried in fragment shaders only.
 set -u
 dir=$1
 command -v glslangValidator >/dev/null || { echo "skip: glslangValidator missing (package glslang-tools)"; exit 77; }
@@ -32,8 +33,9 @@ expand() { # expand FILE DEPTH
 layout=$(sed -n 's/^ *X(\([A-Z_]*\), *\([0-9-]*\)).*/#define SHADER_\1 \2/p' "$dir/../common/base/shader_layout.h")
 [ -n "$layout" ] || { echo "no constants found in common/base/shader_layout.h"; exit 1; }
 
-variants() { # FILE EXPANDED: one variant per line, its defines as "NAME VALUE;NAME VALUE" ("" = none)
-  local listed
+variants() { # FILE EXPANDED STAGE: one variant per line, its defines as "NAME VALUE;NAME VALUE" ("" = none)
+  local listed skip
+  skip=$([ "$3" = frag ] || sed -n 's|^// fragment only: *||p' "$2" | tr ' ,' '\n\n' | sed '/^$/d')
   listed=$(sed -n 's|^// variants: *||p' "$1" | head -n 1)
   if [ -n "$listed" ]; then
     tr '|' '\n' <<<"$listed" | sed 's/^ *//; s/ *$//; s/ *, */;/g; s/^-$//'
@@ -41,7 +43,7 @@ variants() { # FILE EXPANDED: one variant per line, its defines as "NAME VALUE;N
   fi
   echo ""
   grep -oE '#ifdef +[A-Z_]+|defined\( *[A-Z_]+ *\)' "$2" | grep -oE '[A-Z_]{2,}' | grep -v '_GLSL$' |
-    sort -u | sed 's/$/ 1/'
+    grep -vxF -e "${skip:-_}" | sort -u | sed 's/$/ 1/'
   grep -oE '#(el)?if +[A-Z_]+ *== *SHADER_[A-Z_]+' "$2" | sed -E 's/#(el)?if +([A-Z_]+) *== *(SHADER_[A-Z_]+)/\2 \3/' |
     sort -u
 }
@@ -69,7 +71,7 @@ for f in "$dir"/*.vert "$dir"/*.frag "$dir"/*.comp; do
     else
       fail=$((fail + 1)); echo "FAIL $label"; echo "$out"
     fi
-  done < <(variants "$f" "$tmp/$name.expanded")
+  done < <(variants "$f" "$tmp/$name.expanded" "$stage")
 done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ] && [ "$pass" -gt 0 ]

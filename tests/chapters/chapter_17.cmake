@@ -1,0 +1,62 @@
+# Chapter 17 (screen-space ambient occlusion on chapter 11's clustered deferred frame): the pictures its
+# page shows, the claim "forward gets it too" (a depth-normal pre-pass feeding the same two passes: the
+# same picture), that off it is chapter 11's picture, and that on it changes the picture
+# (docs/17_ssao.md). Its reference against traced rays is tests/ssao/ssao.cmake.
+#
+# Agreement bound: 1/255 on 99.99 % of pixels, as for chapter 11. The occlusion itself is the same to
+# the byte (agree.17_ao_forward_*: forward's pre-pass writes the normal in the compact G-buffer's
+# encoding and its depth with the same vertex shader, so the two passes read the same bits); what is
+# left is chapter 11's own difference between the G-buffer's and the rasteriser's surface.
+
+function(chapter_17_tests)
+  set(S ${CMAKE_SOURCE_DIR}/tests/scenes)
+  set(A ${CMAKE_SOURCE_DIR}/assets/scenes)
+  set(C 17_ssao)
+  if(NOT TARGET ${C} OR NOT TARGET 11_clustered)
+    return()
+  endif()
+
+  # The pictures the page shows (the default scene's lit picture is golden.17_ssao): the raw and the
+  # blurred occlusion, the reference scene, and the exercises' pictures.
+  course_golden_test(17_ssao_ao ${C} 1 0.0001 --view ao)
+  course_golden_test(17_ssao_ao_blurred ${C} 1 0.0001 --view ao-blurred)
+  course_golden_test(17_ssao_boxes ${C} 1 0.0001 --view ao-blurred --scene ${S}/ssao_boxes.scene)
+  course_golden_test(17_ssao_samples4 ${C} 1 0.0001 --view ao --ao-samples 4 --ao-blur 0)
+  course_golden_test(17_ssao_radius2 ${C} 1 0.0001 --view ao-blurred --ao-radius 2)
+
+  # Forward gets it too: with SSAO on, deferred and forward (and Forward+) agree on the lit picture,
+  # and the occlusion they read is the same to the byte.
+  foreach(case "default|" "spots|--scene@${A}/spots.scene" "teapots_cutoff0|--scene@${A}/teapots.scene@--cutoff@0"
+               "boxes|--scene@${S}/ssao_boxes.scene" "800|--size@800x600")
+    course_case("${case}" name args)
+    course_agreement_test(17_vs_forward_${name} 1 0.0001 ${C} ${args} VS ${C} --renderer forward ${args})
+  endforeach()
+  # Teapots at the default cut-off: 8 pixels of 76,800 (max 7/255 at (37,73)) on a light's hard cut-off,
+  # the same pixels chapters 11 and 15 leave (tests/chapters/chapter_15.cmake), hence 0.02 %.
+  course_agreement_test(17_vs_forward_teapots 1 0.0002 ${C} --scene ${A}/teapots.scene VS ${C} --renderer forward
+    --scene ${A}/teapots.scene)
+  course_agreement_test(17_vs_forward_plus 1 0.0001 ${C} VS ${C} --renderer forward-plus)
+  foreach(case "default|" "teapots|--scene@${A}/teapots.scene" "raw|--view@ao")
+    course_case("${case}" name args)
+    course_agreement_test(17_ao_forward_${name} 0 0 ${C} --view ao-blurred ${args} VS ${C} --renderer forward
+      --view ao-blurred ${args})
+  endforeach()
+
+  # Off, it is chapter 11's picture to the byte; on, it is not (the ambient term is darker in the
+  # creases: the reference scene's ambient is bright enough to show it).
+  course_agreement_test(17_off_is_11 0 0 ${C} --ssao off VS 11_clustered)
+  course_agreement_test(17_on_differs 1 0.0001 ${C} --scene ${S}/ssao_boxes.scene VS 11_clustered
+    --scene ${S}/ssao_boxes.scene)
+  set_tests_properties(agree.17_on_differs PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
+
+  # --bench names the two passes beside the lighting pass.
+  add_test(NAME chapters.17_bench_passes COMMAND ${C} --headless --size 160x120 --frames 1 --warmup 0 --bench
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.17_bench_passes PROPERTIES LABELS golden SKIP_RETURN_CODE 77
+    PASS_REGULAR_EXPRESSION " ssao_ms=[0-9.]+ ssao_blur_ms=[0-9.]+ lighting_ms=[0-9.]+ ")
+
+  add_test(NAME chapters.17_bad_samples COMMAND ${C} --headless --ao-samples 65 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.17_bad_samples PROPERTIES LABELS golden
+    PASS_REGULAR_EXPRESSION "bad --ao-samples '65': expected a number in \\[1, 64\\]")
+endfunction()
+chapter_17_tests()

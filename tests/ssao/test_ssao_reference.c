@@ -1,0 +1,345 @@
+/* test_ssao_reference.c - chapter 17's screen-space ambient occlusion against an exact reference: for
+ * every pixel, a ray from the eye through the pixel's centre finds the surface, and G x G rays leave it
+ * over the hemisphere about its normal, cosine-weighted and stratified (one jittered ray per cell of
+ * the unit square, mapped to the disc and lifted), each asking whether anything lies within the
+ * radius; the share that leave freely is the occlusion the chapter estimates (its --view ao, or
+ * ao-blurred, in the red channel). All in double precision against every triangle of the scene. The
+ * reference's own noise is measured too: a second set of jitters on every 4th pixel.
+ *
+ *   test_ssao_reference SCENE RADIUS MAX_MEAN BOUND MAX_BEYOND SILHOUETTE BORDER THIN FAR [SAMPLES BLUR]...
+ *
+ * prints, for each configuration (SAMPLES directions, blur BLUR; the raw view where BLUR is 0), the
+ * mean and max error over the pixels that see a surface and the fraction beyond BOUND; fails when the
+ * first configuration's mean exceeds MAX_MEAN or its fraction beyond BOUND exceeds MAX_BEYOND. The
+ * first configuration is also split into the hard cases, each with its own bound on the fraction
+ * beyond BOUND (a pixel may be in several; "open" is the rest):
+ *   silhouette  a neighbour (8 around) is background or more than the radius nearer or farther
+ *   border      within 8 pixels of the picture's edge
+ *   thin        its surface within the radius of a thin object's box (one whose box is thinner than
+ *               a fifth of the radius in two directions: the post)
+ *   far         its surface more than 8 units from the eye
+ */
+#include "app_embed.h"
+#include "chapters.h"
+#include "hard_util.h"
+#include "mat4d.h"
+#include "mesh_data.h"
+#include "rng.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#define W 160
+#define H 120
+#define G 64 /* G x G rays per pixel */
+
+typedef struct tri_object {
+    double *v; /* 9 doubles per triangle: world space */
+    int count;
+    double lo[3], hi[3];
+} tri_object;
+
+static tri_object *objects;
+static int object_count;
+static double reference[W * H]; /* -1: no surface */
+static double distance[W * H];  /* from the eye to the surface, for the hard cases */
+static bool near_thin[W * H];
+
+enum { CASE_SILHOUETTE, CASE_BORDER, CASE_THIN, CASE_FAR, CASE_OPEN, CASE_COUNT };
+static const char *const case_names[CASE_COUNT] = {"silhouette", "border", "thin", "far", "open"};
+
+/* Every object's triangles in world space (double), with its box. */
+static bool build_triangles(const scene *s)
+{
+    objects = calloc((size_t)s->object_count, sizeof *objects);
+    object_count = s->object_count;
+    for (int o = 0; o < s->object_count; o++) {
+        mesh_data md;
+        if (!objects || !mesh_data_from_scene(&md, s, &s->meshes[s->objects[o].mesh]))
+            return false;
+        mat4 world;
+        scene_object_world_at(s, o, 0.0f, world);
+        tri_object *t = &objects[o];
+        t->count = md.index_count / 3;
+        t->v = malloc((size_t)md.index_count * 3 * sizeof(double));
+        for (int k = 0; k < 3; k++)
+            t->lo[k] = DBL_MAX, t->hi[k] = -DBL_MAX;
+        for (int i = 0; t->v && i < md.index_count; i++) {
+            const float *p = &md.vertices[MESH_VERTEX_FLOATS * md.indices[i]];
+            for (int r = 0; r < 3; r++) {
+                double x = world[3][r];
+                for (int c = 0; c < 3; c++)
+                    x += (double)world[c][r] * p[c];
+                t->v[3 * i + r] = x;
+                t->lo[r] = fmin(t->lo[r], x), t->hi[r] = fmax(t->hi[r], x);
+            }
+        }
+        mesh_data_destroy(&md);
+        if (!t->v)
+            return false;
+    }
+    return true;
+}
+
+/* Whether the segment o + t d, t in [0, tmax], meets the box (slabs). */
+static bool ray_box(const double o[3], const double d[3], double tmax, const double lo[3], const double hi[3])
+{
+    double t0 = 0.0, t1 = tmax;
+    for (int k = 0; k < 3; k++) {
+        double inv = 1.0 / d[k], a = (lo[k] - o[k]) * inv, b = (hi[k] - o[k]) * inv;
+        t0 = fmax(t0, fmin(a, b)), t1 = fmin(t1, fmax(a, b));
+        if (t0 > t1 + 1e-12)
+            return false;
+    }
+    return true;
+}
+
+/* Moller-Trumbore in double: the distance along d to triangle v (both sides), or -1. */
+static double ray_triangle(const double o[3], const double d[3], const double *v)
+{
+    double e1[3], e2[3], p[3], q[3], s[3];
+    for (int k = 0; k < 3; k++)
+        e1[k] = v[3 + k] - v[k], e2[k] = v[6 + k] - v[k], s[k] = o[k] - v[k];
+    p[0] = d[1] * e2[2] - d[2] * e2[1], p[1] = d[2] * e2[0] - d[0] * e2[2], p[2] = d[0] * e2[1] - d[1] * e2[0];
+    double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+    if (fabs(det) < 1e-300)
+        return -1.0;
+    double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) / det;
+    if (u < 0.0 || u > 1.0)
+        return -1.0;
+    q[0] = s[1] * e1[2] - s[2] * e1[1], q[1] = s[2] * e1[0] - s[0] * e1[2], q[2] = s[0] * e1[1] - s[1] * e1[0];
+    double w = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
+    if (w < 0.0 || u + w > 1.0)
+        return -1.0;
+    return (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
+}
+
+/* The nearest hit along o + t d with t in (tmin, tmax): its t and triangle (*tri), or -1; any_hit
+ * stops at the first. */
+static double trace(const double o[3], const double d[3], double tmin, double tmax, bool any_hit, const double **tri)
+{
+    double best = -1.0;
+    for (int b = 0; b < object_count; b++) {
+        const tri_object *t = &objects[b];
+        if (!ray_box(o, d, tmax, t->lo, t->hi))
+            continue;
+        for (int i = 0; i < t->count; i++) {
+            double h = ray_triangle(o, d, &t->v[9 * i]);
+            if (h > tmin && h < tmax && (best < 0.0 || h < best)) {
+                best = h, *tri = &t->v[9 * i];
+                if (any_hit)
+                    return best;
+            }
+        }
+    }
+    return best;
+}
+
+static void normalize3(double v[3])
+{
+    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int k = 0; k < 3; k++)
+        v[k] /= l;
+}
+
+/* The share of G x G cosine-weighted rays from p (about n) that meet nothing within radius. */
+static double open_share(const double p[3], const double n[3], double radius, rng *r)
+{
+    double t[3], b[3], o[3];
+    if (fabs(n[0]) < 0.5) /* cross((1,0,0), n) */
+        t[0] = 0.0, t[1] = -n[2], t[2] = n[1];
+    else /* cross((0,1,0), n) */
+        t[0] = n[2], t[1] = 0.0, t[2] = -n[0];
+    normalize3(t);
+    b[0] = n[1] * t[2] - n[2] * t[1], b[1] = n[2] * t[0] - n[0] * t[2], b[2] = n[0] * t[1] - n[1] * t[0];
+    for (int k = 0; k < 3; k++)
+        o[k] = p[k] + 1e-7 * n[k]; /* off the surface's own triangle */
+    int open = 0;
+    for (int i = 0; i < G; i++)
+        for (int j = 0; j < G; j++) {
+            double u = (i + rng_unit(r)) / G, phi = 2.0 * GLM_PI * (j + rng_unit(r)) / G, s = sqrt(u), d[3];
+            const double *tri;
+            for (int k = 0; k < 3; k++)
+                d[k] = s * cos(phi) * t[k] + s * sin(phi) * b[k] + sqrt(1.0 - u) * n[k];
+            open += trace(o, d, 0.0, radius, true, &tri) < 0.0;
+        }
+    return (double)open / (G * G);
+}
+
+/* The surface through pixel (x, y)'s centre: its point and normal (towards the eye); false if none. */
+static bool surface_at(const double inv_view_proj[16], const double eye[3], int x, int y, double p[3], double n[3])
+{
+    double ndc[4] = {2.0 * (x + 0.5) / W - 1.0, 2.0 * (y + 0.5) / H - 1.0, 1.0, 1.0}, far_point[4] = {0}, d[3];
+    for (int r = 0; r < 4; r++)
+        for (int c = 0; c < 4; c++)
+            far_point[r] += inv_view_proj[4 * c + r] * ndc[c];
+    for (int k = 0; k < 3; k++)
+        d[k] = far_point[k] / far_point[3] - eye[k];
+    const double *v;
+    double t = trace(eye, d, 1e-9, 1.0, false, &v);
+    if (t <= 0.0)
+        return false;
+    double e1[3], e2[3];
+    for (int k = 0; k < 3; k++)
+        p[k] = eye[k] + t * d[k], e1[k] = v[3 + k] - v[k], e2[k] = v[6 + k] - v[k];
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1], n[1] = e1[2] * e2[0] - e1[0] * e2[2], n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    normalize3(n);
+    if (n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0.0)
+        for (int k = 0; k < 3; k++)
+            n[k] = -n[k];
+    return true;
+}
+
+/* Whether p lies within radius of the box of an object thinner than radius / 5 across two of its
+ * extents (the thin case). */
+static bool near_thin_object(const double p[3], double radius)
+{
+    for (int b = 0; b < object_count; b++) {
+        const tri_object *t = &objects[b];
+        double e[3], outside = 0.0;
+        for (int k = 0; k < 3; k++) {
+            e[k] = t->hi[k] - t->lo[k];
+            double d = fmax(fmax(t->lo[k] - p[k], p[k] - t->hi[k]), 0.0);
+            outside += d * d;
+        }
+        /* thin in two directions (a post; a plane is thin in one only): the middle extent */
+        double middle = fmax(fmin(e[0], e[1]), fmin(fmax(e[0], e[1]), e[2]));
+        if (middle < radius / 5.0 && sqrt(outside) < radius)
+            return true;
+    }
+    return false;
+}
+
+/* Which hard cases pixel (x, y) is in, as bits of 1 << CASE_*. */
+static int cases_of(int x, int y, double radius)
+{
+    int i = y * W + x, bits = 0;
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            int u = x + dx, v = y + dy;
+            if (u >= 0 && v >= 0 && u < W && v < H &&
+                (reference[v * W + u] < 0.0 || fabs(distance[v * W + u] - distance[i]) > radius))
+                bits |= 1 << CASE_SILHOUETTE;
+        }
+    if (x < 8 || y < 8 || x >= W - 8 || y >= H - 8)
+        bits |= 1 << CASE_BORDER;
+    if (near_thin[i])
+        bits |= 1 << CASE_THIN;
+    if (distance[i] > 8.0)
+        bits |= 1 << CASE_FAR;
+    return bits ? bits : 1 << CASE_OPEN;
+}
+
+/* The reference for every pixel; returns the reference's own noise (the largest difference between
+ * two sets of jitters over every 4th pixel), or -1. */
+static double build_reference(const gpu_scene *gs, double radius, double *noise_mean)
+{
+    double vp[16], inv[16], eye[3], p[3], n[3], sum = 0.0, worst = 0.0;
+    long checked = 0;
+    mat4d_from_float((const float *)gs->view.view_proj, vp);
+    mat4d_invert(vp, inv);
+    for (int k = 0; k < 3; k++)
+        eye[k] = gs->view.eye[k];
+    rng r = rng_seed(1), again = rng_seed(2);
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            double *out = &reference[y * W + x];
+            *out = surface_at(inv, eye, x, y, p, n) ? open_share(p, n, radius, &r) : -1.0;
+            distance[y * W + x] = sqrt((p[0] - eye[0]) * (p[0] - eye[0]) + (p[1] - eye[1]) * (p[1] - eye[1]) +
+                                       (p[2] - eye[2]) * (p[2] - eye[2]));
+            near_thin[y * W + x] = *out >= 0.0 && near_thin_object(p, radius);
+            if (*out >= 0.0 && (x + y * W) % 4 == 0) {
+                double e = fabs(open_share(p, n, radius, &again) - *out);
+                sum += e, worst = fmax(worst, e), checked++;
+            }
+        }
+    *noise_mean = checked ? sum / (double)checked : 0.0;
+    return checked ? worst : -1.0;
+}
+
+typedef struct error_stats {
+    long count, over;
+    double sum, max;
+} error_stats;
+
+/* One configuration: the chapter's occlusion view against the reference, over every pixel with a
+ * surface (all) and per hard case. */
+static bool measure(const gpu_scene *gs, const char *radius, const char *samples, const char *blur, double bound,
+                    error_stats *all, error_stats cases[CASE_COUNT])
+{
+    const char *args[] = {"--view", atoi(blur) > 0 ? "ao-blurred" : "ao", "--ao-radius", radius, "--ao-samples", samples,
+                          "--ao-blur", blur, NULL};
+    static unsigned char rgba[4 * W * H];
+    app_embed *e = NULL;
+    bool ok = app_embed_open(&chapter_17, args, gs, &e) && app_embed_frame(e, gs, false, NULL) &&
+              fbo_read_rgba8(app_embed_target(e), 0, rgba);
+    app_embed_close(e);
+    *all = (error_stats){0};
+    for (int c = 0; c < CASE_COUNT; c++)
+        cases[c] = (error_stats){0};
+    for (int i = 0; ok && i < W * H; i++) {
+        if (reference[i] < 0.0)
+            continue;
+        double err = fabs(rgba[4 * i] / 255.0 - reference[i]);
+        int bits = cases_of(i % W, i / W, atof(radius));
+        for (int c = 0; c <= CASE_COUNT; c++) {
+            error_stats *st = c == CASE_COUNT ? all : &cases[c];
+            if (c < CASE_COUNT && !(bits & 1 << c))
+                continue;
+            st->sum += err, st->max = fmax(st->max, err), st->over += err > bound, st->count++;
+        }
+    }
+    return ok && all->count > 1000;
+}
+
+static double mean_of(const error_stats *e) { return e->count ? e->sum / (double)e->count : 0.0; }
+static double beyond_of(const error_stats *e) { return e->count ? (double)e->over / (double)e->count : 0.0; }
+
+int main(int argc, char **argv)
+{
+    if (argc < 10 || (argc - 10) % 2 != 0) {
+        fprintf(stderr, "usage: %s SCENE RADIUS MAX_MEAN BOUND MAX_BEYOND SILHOUETTE BORDER THIN FAR [SAMPLES BLUR]...\n",
+                argv[0]);
+        return 2;
+    }
+    hard_context_create(W, H);
+    scene s;
+    gpu_scene gs;
+    double noise_mean = 0.0, noise = -1.0;
+    bool ok = hard_expect(scene_load(argv[1], &s) && gpu_scene_create(&s, &gs), "load %s", argv[1]) &&
+              hard_expect(gpu_scene_update(&gs, 0.0f, 5.0 / 256.0, W, H), "the view at %dx%d", W, H) &&
+              hard_expect(build_triangles(&s), "the scene's triangles in double");
+    if (ok)
+        noise = build_reference(&gs, atof(argv[2]), &noise_mean);
+    ok = ok && hard_expect(noise >= 0.0 && noise_mean < 1.0 / 255.0,
+                           "the reference's own noise (%d rays): mean %.5f, max %.5f (1/255 = %.5f)", G * G,
+                           noise_mean, noise, 1.0 / 255.0);
+    const double max_mean = atof(argv[3]), bound = atof(argv[4]), max_beyond = atof(argv[5]);
+    printf("%-8s %-5s %-10s %-10s beyond %.3f\n", "samples", "blur", "mean", "max", bound);
+    for (int c = 0; ok && (c == 0 || 10 + 2 * c < argc); c++) {
+        const char *samples = argc > 10 ? argv[10 + 2 * c] : "16", *blur = argc > 10 ? argv[11 + 2 * c] : "2";
+        error_stats all, cases[CASE_COUNT];
+        bool measured = measure(&gs, argv[2], samples, blur, bound, &all, cases);
+        printf("%-8s %-5s %-10.4f %-10.4f %.4f %%\n", samples, blur, mean_of(&all), all.max, 100.0 * beyond_of(&all));
+        if (c > 0)
+            continue;
+        hard_expect(measured && mean_of(&all) <= max_mean && beyond_of(&all) <= max_beyond,
+                    "%s: mean error %.4f (at most %.4f), %.4f %% of pixels beyond %.3f (at most %.4f %%)", argv[1],
+                    mean_of(&all), max_mean, 100.0 * beyond_of(&all), bound, 100.0 * max_beyond);
+        for (int k = 0; k < CASE_COUNT; k++) {
+            const error_stats *e = &cases[k];
+            if (k == CASE_OPEN) { /* the rest: printed, bounded by the whole */
+                printf("  %-10s %6ld pixels: mean %.4f, max %.4f, %.4f %% beyond %.3f\n", case_names[k], e->count,
+                       mean_of(e), e->max, 100.0 * beyond_of(e), bound);
+                continue;
+            }
+            double limit = atof(argv[6 + k]);
+            hard_expect(e->count > 0 && beyond_of(e) <= limit,
+                        "  %-10s %6ld pixels: mean %.4f, max %.4f, %.4f %% beyond %.3f (at most %.4f %%)", case_names[k],
+                        e->count, mean_of(e), e->max, 100.0 * beyond_of(e), bound, 100.0 * limit);
+        }
+    }
+    return hard_finish();
+}
