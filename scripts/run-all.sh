@@ -4,7 +4,7 @@
 # forward-vs-deferred timing and error table (out/bench.md, out/bench.csv, two plots).
 #
 #   (default)  the course's sweep: the scenes and light counts where the renderers' order changes,
-#              every renderer, the cut-off at three points; about 4 minutes in all on 2 cores
+#              every renderer, the cut-off at three points; about 5 minutes in all on 2 cores
 #   --full     the pages' sweep (what scripts/update-docs.sh measures): about 15 minutes more
 #   --quick    the test-sized sweep: under a minute
 # Headless unless a display is available. Every option is passed to build/bin/bench (its --help).
@@ -14,7 +14,7 @@ cd "$root"
 case " $* " in
   *" --full "*) sweep="the pages' full sweep: about 15 minutes" ;;
   *" --quick "*) sweep="the quick sweep: under a minute" ;;
-  *) sweep="the course's sweep: about 3 minutes" ;;
+  *) sweep="the course's sweep: 3 to 5 minutes" ;;
 esac
 chapters=$(ls chapters/[0-9][0-9]_*.c | wc -l)
 echo "== run-all: build (under a minute), $chapters screenshots (seconds), then the benchmark ($sweep on 2 cores"

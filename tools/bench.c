@@ -7,7 +7,7 @@
  * timed frames one untimed frame per renderer counts the lighting work (GL_SAMPLES_PASSED) and
  * keeps the picture for the error against the exact reference (forward, fp32, cut-off 0).
  *
- *   build/bin/bench                 the course's sweep at 800x800 (about 3 minutes on 2 cores)
+ *   build/bin/bench                 the course's sweep at 800x800 (3 to 5 minutes on 2 cores)
  *   build/bin/bench --full          the pages' sweep (about 15 minutes): scripts/update-docs.sh
  *   build/bin/bench --quick         a small sweep (seconds): the test suite checks its output's shape
  *
@@ -48,7 +48,7 @@ static bool write_outputs(const bench_state *st)
 static void print_plan(const bench_options *o, int cases)
 {
     const char *minutes = strcmp(o->sweep_name, "full") == 0     ? "about 15 minutes"
-                          : strcmp(o->sweep_name, "course") == 0 ? "about 3 minutes"
+                          : strcmp(o->sweep_name, "course") == 0 ? "3 to 5 minutes"
                                                                  : "under a minute";
     fprintf(stderr,
             "bench: the %s sweep: %d cases (%d scene(s) x %d light counts, %d cut-offs) x %d renderers%s; "

@@ -22,7 +22,7 @@ void bench_options_print_help(FILE *f)
         "measures their error against an exact reference; writes DIR/bench.csv, DIR/bench.md,\n"
         "DIR/time_vs_lights.png and DIR/speed_vs_error.png (gnuplot).\n\n"
         "The sweep (the last of --full and --quick; the options below change it further):\n"
-        "  (default)             the course's sweep, what scripts/run-all.sh runs (about 3 minutes on\n"
+        "  (default)             the course's sweep, what scripts/run-all.sh runs (3 to 5 minutes on\n"
         "                        2 cores with llvmpipe): scenes default, city, teapots at 1, 16, 256,\n"
         "                        1024 and the scene's own lights, every renderer, the cut-off at\n"
         "                        1, 5, 20; 5 timed frames per case (1 warm-up); no G-buffer sweep\n"
