@@ -10,10 +10,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define SCRIPT_LINE_MAX 1024
 #define SCRIPT_FRAME_MAX 10000000L
-#define SCRIPT_EVENTS_MAX 1000000
+#define SCRIPT_BYTES_MAX (64L << 20) /* a file larger than this is no hand-written script */
 
 static const char *const kind_names[] = {
     [SCRIPT_KEY] = "key",         [SCRIPT_DOWN] = "down",       [SCRIPT_UP] = "up",
@@ -119,10 +120,17 @@ static bool append(input_script *s, const parsed *p, int *cap)
 {
     for (long f = p->first; f <= p->last; f++) {
         if (s->count == *cap) {
-            int grown_cap = *cap ? *cap * 2 : 64;
-            script_event *grown = grown_cap <= SCRIPT_EVENTS_MAX ? realloc(s->events, (size_t)grown_cap * sizeof *grown) : NULL;
+            /* The limit is checked before the allocation and holds exactly: the last growth
+             * stops at SCRIPT_EVENTS_MAX rather than doubling past it. */
+            if (*cap == SCRIPT_EVENTS_MAX) {
+                log_error("%s:%d: more than %d events (a FRAME-LAST range counts one event per frame)", s->name,
+                          p->ev.line, SCRIPT_EVENTS_MAX);
+                return false;
+            }
+            int grown_cap = *cap ? (*cap > SCRIPT_EVENTS_MAX / 2 ? SCRIPT_EVENTS_MAX : *cap * 2) : 64;
+            script_event *grown = realloc(s->events, (size_t)grown_cap * sizeof *grown);
             if (!grown) {
-                log_error("%s:%d: more than %d events", s->name, p->ev.line, SCRIPT_EVENTS_MAX);
+                log_error("%s:%d: out of memory for %d events", s->name, p->ev.line, grown_cap);
                 return false;
             }
             s->events = grown, *cap = grown_cap;
@@ -172,12 +180,35 @@ bool input_script_parse(const char *text, const char *name, input_script *s)
     }
     if (s->count > 0)
         qsort(s->events, (size_t)s->count, sizeof *s->events, by_frame);
+    /* A check compares with the count its mark remembered: without a mark before it (an earlier
+     * frame, or an earlier line of the same frame) it would compare with nothing. */
+    for (int i = 0; i < s->count && s->events[i].kind != SCRIPT_OBJECTS_MARK; i++)
+        if (s->events[i].kind == SCRIPT_OBJECTS_CHECK) {
+            log_error("%s:%d: objects check: no 'objects mark' before it (at an earlier frame, or earlier in "
+                      "frame %ld) to compare with", name, s->events[i].line, s->events[i].frame);
+            input_script_destroy(s);
+            return false;
+        }
     return true;
 }
 
 bool input_script_load(const char *path, input_script *s)
 {
     memset(s, 0, sizeof *s);
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        log_error("%s: cannot open script: %s", path, strerror(errno));
+        return false;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        log_error("%s: cannot open script: not a regular file%s", path, S_ISDIR(st.st_mode) ? " (a folder)" : "");
+        return false;
+    }
+    if (st.st_size > SCRIPT_BYTES_MAX) {
+        log_error("%s: script of %lld bytes: more than the %ld a script may hold", path, (long long)st.st_size,
+                  SCRIPT_BYTES_MAX);
+        return false;
+    }
     FILE *f = fopen(path, "rb");
     if (!f) {
         log_error("%s: cannot open script: %s", path, strerror(errno));
