@@ -7,9 +7,10 @@
 #   fuzz.scene / fuzz.cli (label fuzz): a short libFuzzer run, compiled with clang by run_fuzz.sh,
 #       when clang is installed.
 #   COURSE_FUZZ=ON with clang (preset `fuzz`): build/bin/fuzz_scene and fuzz_cli for long runs.
-set(COURSE_FUZZ_TARGETS scene cli)
+set(COURSE_FUZZ_TARGETS scene cli script)
 set(COURSE_FUZZ_SECONDS_scene 20)
 set(COURSE_FUZZ_SECONDS_cli 6)
+set(COURSE_FUZZ_SECONDS_script 6)
 
 foreach(target ${COURSE_FUZZ_TARGETS})
   add_executable(fuzz_${target}_replay ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c
@@ -34,6 +35,8 @@ if(COURSE_FUZZ)
   set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/platform/cli.c ${CMAKE_SOURCE_DIR}/common/base/gbuffer_layout_names.c
     ${CMAKE_SOURCE_DIR}/common/platform/keys.c
     ${CMAKE_SOURCE_DIR}/common/base/log.c)
+  set(COURSE_FUZZ_SOURCES_script ${CMAKE_SOURCE_DIR}/common/platform/input_script.c
+    ${CMAKE_SOURCE_DIR}/common/platform/input.c ${COURSE_FUZZ_SOURCES_cli})
   foreach(target ${COURSE_FUZZ_TARGETS})
     add_executable(fuzz_${target} ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c
                    ${COURSE_FUZZ_SOURCES_${target}})

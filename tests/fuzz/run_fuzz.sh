@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # run_fuzz.sh SOURCE_DIR TARGET SECONDS OUT_DIR - a short, bounded libFuzzer run of one parser.
 #
-# TARGET is scene (common/scene/scene.c through scene_parse_string) or cli (common/platform/cli.c through cli_parse).
+# TARGET is scene (common/scene/scene.c through scene_parse_string), cli (common/platform/cli.c through
+# cli_parse), script (common/platform/input_script.c through input_script_parse) or model
+# (common/scene/mesh_data.c through mesh_data_load_memory, Assimp included).
 # The target is compiled here with clang (-fsanitize=fuzzer,address,undefined), so any build tree can
 # run this test. Steps: replay tests/fuzz/regressions/TARGET/ and the seed corpus (each must pass),
 # then fuzz for SECONDS starting from a copy of the seeds. A crash is saved in OUT_DIR as
@@ -9,7 +11,7 @@
 # Exit 77 (skipped) when clang or its libFuzzer runtime is missing.
 set -u
 if [ $# -ne 4 ]; then
-    echo "usage: $0 SOURCE_DIR scene|cli SECONDS OUT_DIR" >&2
+    echo "usage: $0 SOURCE_DIR scene|cli|script|model SECONDS OUT_DIR" >&2
     exit 2
 fi
 src=$1 target=$2 seconds=$3 out=$4
@@ -17,6 +19,7 @@ fuzz=$src/tests/fuzz
 case $target in
     scene) sources="$src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_lights.c $src/common/base/log.c" ;;
     cli) sources="$src/common/platform/cli.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c" ;;
+    script) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c" ;;
     *) echo "unknown fuzz target '$target'" >&2; exit 2 ;;
 esac
 
