@@ -342,7 +342,7 @@ static int app_setup(app *a, const app_desc *desc)
     if (layout && !gbuffer_set_default_layout(layout))
         return EXIT_CODE_USAGE;
     if (!app_target_make(a) || (desc->init && !desc->init(a)))
-        return EXIT_CODE_RUNTIME;
+        return a->input_error ? EXIT_CODE_USAGE : EXIT_CODE_RUNTIME;
     return !layout || gbuffer_layout_fits_pass(layout, a->pass_state) ? EXIT_CODE_OK : EXIT_CODE_USAGE;
 }
 

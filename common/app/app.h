@@ -71,6 +71,8 @@ typedef struct app {
     const fbo *linear;   /* the chapter's linear sum of this frame (before present), or NULL */
     const gl_pass_state *pass_state; /* the chapter's lighting pass state, shown by the overlay */
     char default_scene[4200]; /* the data folder's default scene, when no --scene was given */
+    bool input_error; /* set by init when what failed was an option's value (beyond the context's
+                       * limit): the run exits 2, not 1 */
 } app;
 
 typedef struct app_desc {

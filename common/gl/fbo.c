@@ -139,7 +139,7 @@ bool fbo_samples_supported(int n, int cap, const char *what)
     max = max < cap ? max : cap;
     if (n <= max)
         return true;
-    log_error("%s %d: this context allows at most %d (GL_MAX_SAMPLES %d, GL_MAX_COLOR_TEXTURE_SAMPLES %d, "
+    log_error("%s '%d': this context allows at most %d (GL_MAX_SAMPLES %d, GL_MAX_COLOR_TEXTURE_SAMPLES %d, "
               "GL_MAX_DEPTH_TEXTURE_SAMPLES %d)", what, n, max, max_samples, max_color, max_depth);
     return false;
 }

@@ -322,6 +322,45 @@ static int parse_choice(const cli_desc *desc, const char *what, const char *valu
     return usage_error(desc, fmt, value ? value : "");
 }
 
+/* "1, 2, 4, 8, 16 or 32": every power of two in [lo, hi], written out. */
+static void powers_of_two(double lo, double hi, char *out, size_t size)
+{
+    size_t n = 0;
+    out[0] = '\0';
+    for (double p = 1; p <= hi && n + 24 < size; p *= 2)
+        if (p >= lo)
+            n += (size_t)snprintf(out + n, size - n, "%s%.0f", n ? ", " : "", p);
+    char *last = strrchr(out, ',');
+    if (last) { /* "1, 2, 4" -> "1, 2 or 4" */
+        char tail[32];
+        snprintf(tail, sizeof tail, " or%s", last + 1);
+        snprintf(last, size - (size_t)(last - out), "%s", tail);
+    }
+}
+
+/* A chapter's number option: the value's shape and range, with the range written out. */
+static int parse_extra_number(const cli_desc *desc, const cli_extra *e, const char *v, const char **out)
+{
+    double d = 0.0;
+    bool ok = cli_parse_double(v, e->lo, e->hi, &d);
+    if (ok && e->number != CLI_REAL)
+        ok = d == floor(d) && strpbrk(v, ".eExX") == NULL; /* "4.0" or "4e0" is not written as a count */
+    if (ok && e->number == CLI_POWER_OF_TWO)
+        ok = d >= 1 && frexp(d, &(int){0}) == 0.5;
+    if (ok) {
+        *out = v;
+        return EXIT_CODE_OK;
+    }
+    char fmt[400], range[200];
+    if (e->number == CLI_POWER_OF_TWO)
+        powers_of_two(e->lo, e->hi, range, sizeof range);
+    else
+        snprintf(range, sizeof range, "%s from %.15g to %.15g", e->number == CLI_WHOLE ? "a whole number" : "a number",
+                 e->lo, e->hi);
+    snprintf(fmt, sizeof fmt, "bad --%s '%%s': expected %s", e->name, range);
+    return usage_error(desc, fmt, v);
+}
+
 /* --NAME VALUE of the chapter's own options. */
 static int parse_extra(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
 {
@@ -333,6 +372,8 @@ static int parse_extra(int argc, char **argv, int *i, const cli_desc *desc, cli_
             continue;
         if (!(v = option_value(argc, argv, i, opt)))
             return usage_error(desc, "%s needs a value", opt);
+        if (desc->extras[k].number != CLI_TEXT)
+            return parse_extra_number(desc, &desc->extras[k], v, &out->extra_values[k]);
         if (!desc->extras[k].choices) {
             out->extra_values[k] = v;
             return EXIT_CODE_OK;

@@ -26,13 +26,24 @@
 
 enum { CLI_PARSE_DONE = -1 }; /* cli_parse: --help was printed, exit 0 */
 
-/* An option a chapter adds: --NAME VALUE, VALUE one of choices (NULL-terminated) or free text. */
+/* What a chapter's option takes when it has no choices: free text, or a number checked here. */
+typedef enum cli_number {
+    CLI_TEXT,
+    CLI_REAL,         /* a finite number in [lo, hi] */
+    CLI_WHOLE,        /* a whole number in [lo, hi] */
+    CLI_POWER_OF_TWO, /* a whole number in [lo, hi] that is a power of two (sample counts) */
+} cli_number;
+
+/* An option a chapter adds: --NAME VALUE, VALUE one of choices (NULL-terminated), a number
+ * (number, lo, hi), or free text. */
 typedef struct cli_extra {
     const char *name;
     const char *metavar;
     const char *help;
     const char *const *choices;
     const char *default_value;
+    cli_number number;
+    double lo, hi;
 } cli_extra;
 
 typedef struct cli_desc {
