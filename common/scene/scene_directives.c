@@ -30,9 +30,9 @@ static bool take_camera_attribute(parser *p, scene_camera *c, unsigned *seen)
     case CAMERA_FOVY:
         if (!scene_parser_take_number(p, "camera fovy", NUMBER_POSITIVE, &c->fovy_deg))
             return false;
-        if (!(c->fovy_deg < 180.0f))
-            return scene_parser_fail(p, "camera fovy: must be between 0 and 180 degrees, got '%s'",
-                                     scene_parser_show_token(p->tok[p->pos - 1]).text);
+        if (!(c->fovy_deg < 180.0f) || !(c->fovy_deg >= (float)SCENE_FOVY_MIN))
+            return scene_parser_fail(p, "camera fovy: must be between 0 and 180 degrees (at least %g), got '%s'",
+                                     SCENE_FOVY_MIN, scene_parser_show_token(p->tok[p->pos - 1]).text);
         return true;
     case CAMERA_NEAR: return scene_parser_take_number(p, "camera near", NUMBER_POSITIVE, &c->near_plane);
     case CAMERA_FAR: return scene_parser_take_number(p, "camera far", NUMBER_POSITIVE, &c->far_plane);
@@ -50,6 +50,10 @@ static bool check_camera(parser *p, scene_camera *c, unsigned seen)
     if (!(c->far_plane > c->near_plane))
         return scene_parser_fail(p, "camera: far (%g) must be greater than near (%g)", c->far_plane,
                                  c->near_plane);
+    if (!((double)c->far_plane / c->near_plane <= SCENE_DEPTH_RATIO_MAX))
+        return scene_parser_fail(p, "camera: far / near is %g, more than a depth buffer can hold (%.0f = 2^24: "
+                                 "the farther half of the view would share one depth step)",
+                                 (double)c->far_plane / c->near_plane, SCENE_DEPTH_RATIO_MAX);
     vec3 view, side;
     glm_vec3_sub(c->target, c->eye, view);
     float view_len = glm_vec3_norm(view);
