@@ -1,6 +1,8 @@
 /* cli.c - see cli.h. */
 #include "cli.h"
 
+#include "data_dir.h"
+#include "input_script.h"
 #include "keys.h"
 #include "log.h"
 
@@ -10,6 +12,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 
 int cli_choice_index(const char *const *choices, const char *value)
@@ -473,6 +476,44 @@ static int parse_argument(int argc, char **argv, int *i, const cli_desc *desc, c
     return usage_error(desc, "unexpected argument '%s'", a);
 }
 
+/* --scene or --script: found in the current folder or the data folder, and a regular file. */
+static int find_input(const cli_desc *desc, const char *option, const char *what, const char **path, char *found,
+                      size_t size)
+{
+    char tried[9000];
+    struct stat st;
+    if (!data_dir_find(*path, NULL, found, size, tried, sizeof tried)) {
+        log_error("%s: cannot open %s: No such file or directory (looked for %s)", *path, what, tried);
+        return EXIT_CODE_USAGE;
+    }
+    if (stat(found, &st) != 0 || !S_ISREG(st.st_mode)) {
+        log_error("%s: cannot open %s: not a regular file%s (%s)", found, what,
+                  S_ISDIR(st.st_mode) ? " but a folder" : "", option);
+        return EXIT_CODE_USAGE;
+    }
+    *path = found;
+    (void)desc;
+    return EXIT_CODE_OK;
+}
+
+/* The files the options name: there, readable, and (a script) well formed, before any work. */
+static int check_inputs(const cli_desc *desc, cli_options *out)
+{
+    data_dir_set(out->data_dir);
+    int rc = EXIT_CODE_OK;
+    if (out->scene_path)
+        rc = find_input(desc, "--scene", "scene", &out->scene_path, out->scene_found, sizeof out->scene_found);
+    if (rc == EXIT_CODE_OK && out->script)
+        rc = find_input(desc, "--script", "script", &out->script, out->script_found, sizeof out->script_found);
+    input_script s;
+    if (rc == EXIT_CODE_OK && out->script) {
+        if (!input_script_load(out->script, &s))
+            return EXIT_CODE_USAGE;
+        input_script_destroy(&s);
+    }
+    return rc;
+}
+
 int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
 {
     set_defaults(desc, out);
@@ -493,5 +534,5 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
                            out->script ? "--script" : out->overlay ? "--overlay" : "--compare");
     if (out->minimise_cycle > 0 && out->bench)
         return usage_error(desc, "%s stops the frames it would time: not with --bench", "--minimise-cycle");
-    return EXIT_CODE_OK;
+    return check_inputs(desc, out);
 }

@@ -7,8 +7,11 @@
  *                                          (both false, without a message, when it is not)
  *
  * A chapter describes what it adds (renderers, views, extra options) in a
- * cli_desc; the parser knows the rest. Values are validated here, so the
- * rest of the course can trust them.
+ * cli_desc; the parser knows the rest. Values are validated here, before any
+ * context or work, so the rest of the course can trust them: numbers and their
+ * ranges, choices, and the input files. A relative --scene or --script is
+ * looked for in the current folder, then in the data folder (--data-dir is set
+ * here for that); the script is read and checked whole (input_script.h).
  */
 #ifndef COMMON_CLI_H
 #define COMMON_CLI_H
@@ -84,6 +87,7 @@ typedef struct cli_options {
     bool overlay;         /* the overlay on from the start, and in --screenshot */
     const char *compare;  /* "off", "split" or "difference": forward beside the chapter's renderer */
     const char *extra_values[CLI_MAX_EXTRAS];
+    char scene_found[4200], script_found[4200]; /* where --scene and --script were found */
 } cli_options;
 
 int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out);

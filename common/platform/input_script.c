@@ -1,12 +1,12 @@
 /* input_script.c - see input_script.h. */
 #include "input_script.h"
 
-#include "cli.h"
 #include "input.h"
 #include "keys.h"
 #include "log.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +29,19 @@ typedef struct parsed {
     script_event ev;
 } parsed;
 
+/* The whole of `text` as a number in [lo, hi] (the command line's rules; cli.c reads scripts, so
+ * this file does not include it). */
+static bool parse_number(const char *text, double lo, double hi, bool whole, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = whole ? (double)strtol(text, &end, 10) : strtod(text, &end);
+    if (errno || end == text || *end || !isfinite(v) || v < lo || v > hi)
+        return false;
+    *out = v;
+    return true;
+}
+
 static bool parse_frames(const char *word, long *first, long *last)
 {
     char head[32];
@@ -37,10 +50,10 @@ static bool parse_frames(const char *word, long *first, long *last)
     if (n == 0 || n >= sizeof head)
         return false;
     memcpy(head, word, n), head[n] = '\0';
-    int a = 0, b = 0;
-    if (!cli_parse_int(head, 0, SCRIPT_FRAME_MAX, &a) || (dash && !cli_parse_int(dash + 1, a, SCRIPT_FRAME_MAX, &b)))
+    double a = 0, b = 0;
+    if (!parse_number(head, 0, SCRIPT_FRAME_MAX, true, &a) || (dash && !parse_number(dash + 1, a, SCRIPT_FRAME_MAX, true, &b)))
         return false;
-    *first = a, *last = dash ? b : a;
+    *first = (long)a, *last = dash ? (long)b : (long)a;
     return true;
 }
 
@@ -62,7 +75,7 @@ static bool parse_args(script_event *ev, char **w, int n, const char **why)
         return n == 1 && (ev->code = keys_code(w[0])) != 0;
     case SCRIPT_MOVE:
         *why = "expected X Y, framebuffer pixels";
-        if (n != 2 || !cli_parse_double(w[0], -1e6, 1e6, &x) || !cli_parse_double(w[1], -1e6, 1e6, &y))
+        if (n != 2 || !parse_number(w[0], -1e6, 1e6, false, &x) || !parse_number(w[1], -1e6, 1e6, false, &y))
             return false;
         ev->x = x, ev->y = y;
         return true;
@@ -70,7 +83,7 @@ static bool parse_args(script_event *ev, char **w, int n, const char **why)
     case SCRIPT_RELEASE: *why = "expected left or right"; return n == 1 && parse_button(w[0], &ev->code);
     case SCRIPT_SCROLL:
         *why = "expected wheel steps";
-        return n == 1 && cli_parse_double(w[0], -1e3, 1e3, &ev->y);
+        return n == 1 && parse_number(w[0], -1e3, 1e3, false, &ev->y);
     case SCRIPT_SCREENSHOT:
         *why = "expected a file name ending in .png, .bmp, .tga or .jpg";
         if (n != 1 || strlen(w[0]) >= sizeof ev->path)
