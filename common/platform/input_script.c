@@ -23,10 +23,13 @@ static const char *const kind_names[] = {
     [SCRIPT_OBJECTS_MARK] = "objects", [SCRIPT_QUIT] = "quit",
 };
 
+#define SCRIPT_PATH_MAX 255
+
 /* One line's event, before its frame range is expanded. */
 typedef struct parsed {
     long first, last;
     script_event ev;
+    char path[SCRIPT_PATH_MAX + 1];
 } parsed;
 
 /* The whole of `text` as a number in [lo, hi] (the command line's rules; cli.c reads scripts, so
@@ -64,8 +67,9 @@ static bool parse_button(const char *word, int *button)
 }
 
 /* The arguments of `kind` from the words after it; false with *why set when they are wrong. */
-static bool parse_args(script_event *ev, char **w, int n, const char **why)
+static bool parse_args(parsed *line, char **w, int n, const char **why)
 {
+    script_event *ev = &line->ev;
     double x = 0.0, y = 0.0;
     switch (ev->kind) {
     case SCRIPT_KEY:
@@ -86,9 +90,9 @@ static bool parse_args(script_event *ev, char **w, int n, const char **why)
         return n == 1 && parse_number(w[0], -1e3, 1e3, false, &ev->y);
     case SCRIPT_SCREENSHOT:
         *why = "expected a file name ending in .png, .bmp, .tga or .jpg";
-        if (n != 1 || strlen(w[0]) >= sizeof ev->path)
+        if (n != 1 || strlen(w[0]) > SCRIPT_PATH_MAX)
             return false;
-        strcpy(ev->path, w[0]);
+        strcpy(line->path, w[0]);
         return true;
     case SCRIPT_OBJECTS_MARK:
         *why = "expected mark or check";
@@ -122,15 +126,27 @@ static bool parse_line(char *line, const char *name, int number, parsed *out)
     }
     out->ev.kind = (script_kind)k;
     const char *why = "";
-    if (!parse_args(&out->ev, w + 2, n - 2, &why)) {
+    if (!parse_args(out, w + 2, n - 2, &why)) {
         log_error("%s:%d: %s: %s", name, number, w[1], why);
         return false;
     }
     return true;
 }
 
-static bool append(input_script *s, const parsed *p, int *cap)
+static bool append(input_script *s, parsed *p, int *cap)
 {
+    if (p->ev.kind == SCRIPT_SCREENSHOT) { /* one copy of the file name for the whole range */
+        char **grown = realloc(s->paths, (size_t)(s->path_count + 1) * sizeof *grown);
+        char *copy = grown ? strdup(p->path) : NULL;
+        if (grown)
+            s->paths = grown;
+        if (!copy) {
+            log_error("%s:%d: out of memory", s->name, p->ev.line);
+            return false;
+        }
+        s->paths[s->path_count++] = copy;
+        p->ev.path = copy;
+    }
     for (long f = p->first; f <= p->last; f++) {
         if (s->count == *cap) {
             /* The limit is checked before the allocation and holds exactly: the last growth
@@ -254,9 +270,13 @@ bool input_script_load(const char *path, input_script *s)
 
 void input_script_destroy(input_script *s)
 {
+    for (int i = 0; i < s->path_count; i++)
+        free(s->paths[i]);
+    free(s->paths);
     free(s->events);
+    s->paths = NULL;
     s->events = NULL;
-    s->count = 0;
+    s->count = s->path_count = 0;
 }
 
 void input_script_range(const input_script *s, long frame, int *first, int *count)

@@ -56,13 +56,15 @@ typedef struct script_event {
     script_kind kind;
     int code;    /* key code, or mouse button */
     double x, y; /* move: the cursor; scroll: y */
-    char path[256];
+    const char *path; /* screenshot: the file, owned by the script (one copy a line, shared by its range) */
     int line;
 } script_event;
 
 typedef struct input_script {
     script_event *events; /* sorted by frame, file order kept within a frame */
     int count;
+    char **paths; /* the screenshot lines' files */
+    int path_count;
     char name[256];
 } input_script;
 

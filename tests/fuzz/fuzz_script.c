@@ -34,7 +34,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             const script_event *e = &s.events[i];
             if (e->frame < 0 || (i > 0 && e->frame < s.events[i - 1].frame))
                 abort(); /* sorted by frame */
-            if (e->kind < SCRIPT_KEY || e->kind > SCRIPT_QUIT || memchr(e->path, '\0', sizeof e->path) == NULL)
+            if (e->kind < SCRIPT_KEY || e->kind > SCRIPT_QUIT || (e->kind == SCRIPT_SCREENSHOT) != (e->path != NULL) ||
+                (e->path && strlen(e->path) == 0))
                 abort();
             marked |= e->kind == SCRIPT_OBJECTS_MARK;
             if (e->kind == SCRIPT_OBJECTS_CHECK && !marked)
