@@ -10,6 +10,7 @@
 #include "light.h"
 #include "log.h"
 #include "platform.h"
+#include "progress.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -277,6 +278,7 @@ static int run_loop(app *a, loop *l)
 {
     int rc = EXIT_CODE_OK;
     for (bool running = true; running;) {
+        progress_frame(a->cli->program, a->frame_index, l->total); /* a line on stderr while a frame is slow */
         if (!app_hooks_minimise(&l->hooks, a, l->opt))
             return l->hooks.rc;
         platform_poll();
@@ -366,6 +368,7 @@ static void app_close(app *a, const app_desc *desc)
 static int app_finish(app *a, loop *l, int rc)
 {
     const cli_options *opt = l->opt;
+    progress_end();
     if (rc == EXIT_CODE_OK)
         rc = app_hooks_check(&l->hooks, a, opt);
     if (rc == EXIT_CODE_OK && opt->bench && a->frame_index == l->total)

@@ -5,6 +5,7 @@
 #include "input_script.h"
 #include "keys.h"
 #include "log.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -116,7 +117,9 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "                           fail if a frame was drawn while minimised or GL objects leaked\n"
             "                           (exit 77 when nothing can minimise it: no window manager)\n"
             "  --camera \"POSE\"          the scene's camera with these attributes replaced, as in a\n"
-            "                           scene's camera line: \"eye X Y Z target X Y Z [up X Y Z] [fovy F]\"\n"
+            "                           scene's camera line: \"eye X Y Z target X Y Z [up X Y Z] [fovy F]\n"
+            "                           [near N] [far F]\" (fovy 0.01..180 degrees, near > 0, far / near\n"
+            "                           at most 2^24: what a depth buffer can hold)\n"
             "  --falloff hard|windowed  how lights fade to their radius (default: the scene's, else hard):\n"
             "                           windowed multiplies by (1 - (d/r)^4)^2, so the cut-off leaves no step\n"
             "  --gbuffer LAYOUT         the G-buffer's formats (common/render/gbuffer.h, docs/02_mrt_gbuffer.md):\n"
@@ -135,7 +138,8 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --script FILE            timed keys and mouse events, as if typed (format:\n"
             "                           common/platform/input_script.h; the tests drive the window with it)\n"
             "  --gl-info                print the GL context's renderer, version and limits, then exit\n"
-            "  --verbose                more log lines\n",
+            "  --verbose                more log lines\n"
+            "  --quiet                  no progress lines (written while frames take more than 2 s)\n",
             desc->default_cutoff);
     keys_print_help(stream, desc->program, desc->views != NULL);
     fprintf(stream, "\nexit codes: 0 ok, 1 runtime failure, 2 usage or input error, 77 no GL context\n");
@@ -238,6 +242,7 @@ static const struct flag_option {
     {"--paused", offsetof(cli_options, paused)},
     {"--gl-debug", offsetof(cli_options, gl_debug)},
     {"--verbose", offsetof(cli_options, verbose)},
+    {"--quiet", offsetof(cli_options, quiet)},
     {"--gl-info", offsetof(cli_options, gl_info)},
     {"--overlay", offsetof(cli_options, overlay)},
 };
@@ -500,6 +505,7 @@ static int find_input(const cli_desc *desc, const char *option, const char *what
 static int check_inputs(const cli_desc *desc, cli_options *out)
 {
     data_dir_set(out->data_dir);
+    progress_set_quiet(out->quiet);
     int rc = EXIT_CODE_OK;
     if (out->scene_path)
         rc = find_input(desc, "--scene", "scene", &out->scene_path, out->scene_found, sizeof out->scene_found);

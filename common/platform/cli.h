@@ -82,6 +82,7 @@ typedef struct cli_options {
     int resize_cycle;     /* resize N times after the first frame, then check for leaked GL objects */
     int minimise_cycle;   /* window: minimise and restore N times; no frame may be drawn while minimised */
     bool verbose;
+    bool quiet;           /* no progress lines while slow frames run (common/base/progress.h) */
     bool gl_info;         /* print the context's renderer, version and limits, and exit */
     const char *script;   /* timed keys and mouse events (common/platform/input_script.h) */
     bool overlay;         /* the overlay on from the start, and in --screenshot */
