@@ -4,6 +4,7 @@
 
 #include "bench_gbuffer.h"
 #include "bench_renderers.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -55,6 +56,7 @@ void bench_options_print_help(FILE *f)
         "  --out DIR             output folder (default out)\n"
         "  --backend egl|osmesa  headless GL (default egl)\n"
         "  --no-plots            skip gnuplot\n"
+        "  --quiet               no progress lines (written while a frame takes more than 2 s)\n"
         "  --quick               small sweep for tests: 160x160, default scene, 1,16,64 lights,\n"
         "                        3 frames, cut-offs 2,5,16 at 16 lights\n");
     bench_gbuffer_print_help(f);
@@ -327,6 +329,10 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
             continue;
         if (strcmp(a, "--no-plots") == 0) {
             o->plots = false;
+            continue;
+        }
+        if (strcmp(a, "--quiet") == 0) {
+            progress_set_quiet(true);
             continue;
         }
         int gbuffer = bench_gbuffer_parse_option(a, v);
