@@ -501,6 +501,30 @@ static int find_input(const cli_desc *desc, const char *option, const char *what
     return EXIT_CODE_OK;
 }
 
+/* --screenshot: its folder found in the current folder, then the data folder; the file itself is
+ * written later (atomically, image.c), but a folder that is not there is known now. */
+static int find_output(const char **path, char *found, size_t size)
+{
+    const char *slash = strrchr(*path, '/');
+    char dir[4200], tried[9000], where[4200];
+    struct stat st;
+    if (!slash)
+        return EXIT_CODE_OK; /* the current folder */
+    snprintf(dir, sizeof dir, "%.*s", slash == *path ? 1 : (int)(slash - *path), *path);
+    if (!data_dir_find(dir, NULL, where, sizeof where, tried, sizeof tried) || stat(where, &st) != 0 ||
+        !S_ISDIR(st.st_mode)) {
+        log_error("cannot write %s: No such file or directory (no folder %s: looked for %s)", *path, dir, tried);
+        return EXIT_CODE_USAGE;
+    }
+    int n = snprintf(found, size, "%s%s", where, slash);
+    if (n < 0 || (size_t)n >= size || (stat(found, &st) == 0 && S_ISDIR(st.st_mode))) {
+        log_error("cannot write %s: %s", *path, n >= 0 && (size_t)n < size ? "it is a folder" : "path too long");
+        return EXIT_CODE_USAGE;
+    }
+    *path = found;
+    return EXIT_CODE_OK;
+}
+
 /* The files the options name: there, readable, and (a script) well formed, before any work. */
 static int check_inputs(const cli_desc *desc, cli_options *out)
 {
@@ -511,6 +535,8 @@ static int check_inputs(const cli_desc *desc, cli_options *out)
         rc = find_input(desc, "--scene", "scene", &out->scene_path, out->scene_found, sizeof out->scene_found);
     if (rc == EXIT_CODE_OK && out->script)
         rc = find_input(desc, "--script", "script", &out->script, out->script_found, sizeof out->script_found);
+    if (rc == EXIT_CODE_OK && out->screenshot)
+        rc = find_output(&out->screenshot, out->screenshot_found, sizeof out->screenshot_found);
     input_script s;
     if (rc == EXIT_CODE_OK && out->script) {
         if (!input_script_load(out->script, &s))

@@ -12,6 +12,7 @@
  * ranges, choices, and the input files. A relative --scene or --script is
  * looked for in the current folder, then in the data folder (--data-dir is set
  * here for that); the script is read and checked whole (input_script.h).
+ * --screenshot's folder is found the same way, and must exist.
  */
 #ifndef COMMON_CLI_H
 #define COMMON_CLI_H
@@ -89,6 +90,7 @@ typedef struct cli_options {
     const char *compare;  /* "off", "split" or "difference": forward beside the chapter's renderer */
     const char *extra_values[CLI_MAX_EXTRAS];
     char scene_found[4200], script_found[4200]; /* where --scene and --script were found */
+    char screenshot_found[4200];                /* --screenshot in the folder that was found */
 } cli_options;
 
 int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out);

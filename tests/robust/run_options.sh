@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # run_options.sh BIN_DIR SOURCE_DIR [sanitized] - every bad option value of every chapter exits 2
-# with its one line, before any GL context; input files are found from any folder.
+# with its one line, before any GL context; input files (and --screenshot's folder) are found from
+# any folder.
 #
 # 1. Refused while parsing: each run has no GL at all (no EGL driver, OSMesa held below 3.3, as
 #    robust.inputs does), so a value checked only after a context exists would exit 77, not 2.
@@ -43,6 +44,8 @@ for ch in $chapters; do
     expect 2 "cannot open script: not a regular file but a folder" "$ch" --script "$tmp/folder"
     expect 2 "objects check: no 'objects mark' before it" "$ch" --script "$tmp/nomark.script"
     expect 2 "(looked for $tmp/gone.scene and " "$ch" --scene gone.scene
+    expect 2 "cannot write nowhere/x.png: No such file or directory (no folder nowhere: looked for $tmp/nowhere and " \
+        "$ch" --screenshot nowhere/x.png
 done
 # Each chapter's own options.
 expect 2 "bad --radius '0': expected a number from 1e-06 to 1000000" 04_light_volumes --radius 0

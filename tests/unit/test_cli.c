@@ -188,6 +188,12 @@ static void test_input_files(void **state)
     fclose(f);
     assert_int_equal(parse(&o, line), EXIT_CODE_OK);
     assert_string_equal(o.script, script);
+    /* --screenshot: its folder must be there (the current folder's, else the data folder's). */
+    assert_int_equal(parse(&o, "--screenshot /nonexistent-folder/x.png"), EXIT_CODE_USAGE);
+    assert_int_equal(parse(&o, "--screenshot /tmp"), EXIT_CODE_USAGE); /* a folder */
+    assert_int_equal(parse(&o, "--screenshot /tmp/x.png"), EXIT_CODE_OK);
+    assert_int_equal(parse(&o, "--screenshot assets/scenes/x.png"), EXIT_CODE_OK);
+    assert_non_null(strstr(o.screenshot, "assets/scenes/x.png"));
     assert_int_equal(parse(&o, "--quiet"), EXIT_CODE_OK);
     assert_true(o.quiet);
     remove(script);
