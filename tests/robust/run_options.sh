@@ -59,6 +59,13 @@ expect 2 "bad --cluster-lights '0'" 11_clustered --cluster-lights 0
 expect 2 "bad --samples '3': expected 1, 2, 4, 8, 16 or 32" 13_msaa --samples 3
 expect 2 "bad --samples '2.5': expected 1, 2, 4, 8, 16 or 32" 13_msaa --samples 2.5
 expect 2 "bad --samples '64'" 13_msaa --samples 64
+# Each chapter's choices: a value that is none of them.
+for pair in 04_light_volumes:scale 06_additive_blending:accum 06_additive_blending:tonemap \
+            07_face_culling:cull 07_face_culling:depth-clamp 08_stencil_volumes:batch 08_stencil_volumes:count \
+            08_stencil_volumes:depth-clamp 08_stencil_volumes:reset 09_spot_lights:spot-volume \
+            09_spot_lights:scale 10_tiled_deferred:path 11_clustered:assign 12_transparency:sort; do
+    expect 2 "unknown --${pair#*:} value 'bogus' (one of:" "${pair%%:*}" "--${pair#*:}" bogus
+done
 # Accepted by the parser: the run goes on to ask for a context, and finds none (77).
 expect 77 "" 08_stencil_volumes --scene assets/scenes/city.scene
 expect 77 "" 13_msaa --samples 8
