@@ -597,6 +597,29 @@ static void keep_warning(const char *message, char *user)
 
 static bool finite3(const struct aiVector3D *v) { return isfinite(v->x) && isfinite(v->y) && isfinite(v->z); }
 
+/* Each mesh's faces must be what its primitive types say: Assimp's triangulation asserts (and
+ * aborts) when a loader marked a mesh as holding polygons that it does not hold. */
+static bool check_faces(const struct aiScene *sc, char *why, size_t n)
+{
+    for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+        const struct aiMesh *mesh = sc->mMeshes[i];
+        unsigned types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; f++) {
+            unsigned k = mesh->mFaces[f].mNumIndices;
+            if (k == 0)
+                return fail(why, n, "mesh %u face %u has no corners", i, f);
+            types |= k == 1 ? aiPrimitiveType_POINT : k == 2 ? aiPrimitiveType_LINE
+                     : k == 3 ? aiPrimitiveType_TRIANGLE : aiPrimitiveType_POLYGON;
+        }
+        unsigned said = mesh->mPrimitiveTypes & (aiPrimitiveType_POINT | aiPrimitiveType_LINE |
+                                                 aiPrimitiveType_TRIANGLE | aiPrimitiveType_POLYGON);
+        if (said != types)
+            return fail(why, n, "mesh %u: its faces do not match the primitive types Assimp read for it "
+                        "(0x%x, faces 0x%x): a malformed file", i, said, types);
+    }
+    return true;
+}
+
 /* Positions and the normals the file gives (none are made yet) must be finite. A zero-length
  * normal passes: the loader replaces it by +Y (docs/hard-cases.md, case 9). */
 static bool check_vertices(const struct aiScene *sc, char *why, size_t n)
@@ -656,7 +679,8 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
         aiReleaseImport(sc);
         return NULL;
     }
-    bool usable = sc->mNumMeshes > 0 ? check_vertices(sc, why, n) : fail(why, n, "it holds no meshes");
+    bool usable = sc->mNumMeshes > 0 ? check_faces(sc, why, n) && check_vertices(sc, why, n)
+                                      : fail(why, n, "it holds no meshes");
     aiReleaseImport(sc);
     if (!usable)
         return NULL;
