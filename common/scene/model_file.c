@@ -297,6 +297,11 @@ static bool prescan_ply(const char *d, size_t size, const model_limits *lim, cha
         }
     if (size < 3 || memcmp(d, "ply", 3) != 0 || !stop)
         return fail(why, n, "no PLY header (a first line 'ply' and an 'end_header' line)");
+    const char *after = stop + 10;
+    while (after < d + size && (*after == ' ' || *after == '\t' || *after == '\r'))
+        after++;
+    if (after == d + size || *after != '\n') /* Assimp 5.2 loops for ever on what follows otherwise */
+        return fail(why, n, "the PLY header's 'end_header' is not alone on its line");
     static ply_element el[PLY_ELEMENTS_MAX]; /* 16 x 64 properties: kept off the stack */
     int elements = 0, format = -1;
     cursor c = {d, stop};
@@ -342,7 +347,9 @@ static bool prescan_ply(const char *d, size_t size, const model_limits *lim, cha
     if (format < 0)
         return fail(why, n, "the PLY format is not ascii, binary_little_endian or binary_big_endian");
     long long vertices = 0, faces = 0;
+    bool have_vertices = false;
     for (int i = 0; i < elements; i++) {
+        have_vertices |= strcmp(el[i].name, "vertex") == 0 && el[i].count > 0;
         if (el[i].count > 0 && el[i].property_count == 0)
             return fail(why, n, "PLY element %s has %lld entries and no property", el[i].name, el[i].count);
         if (strcmp(el[i].name, "vertex") == 0)
@@ -353,6 +360,8 @@ static bool prescan_ply(const char *d, size_t size, const model_limits *lim, cha
             return fail(why, n, "PLY element %s declares %lld entries, more than the vertex and face limits",
                         el[i].name, el[i].count);
     }
+    if (!have_vertices)
+        return fail(why, n, "no PLY vertices (a line 'element vertex N' with N > 0)");
     if (!check_limits(vertices, faces, lim, why, n))
         return false;
     const char *body = memchr(stop, '\n', (size_t)(d + size - stop));
