@@ -493,6 +493,7 @@ typedef struct io_state {
     bool siblings;
     long long budget, used; /* bytes of the named files read so far */
     bool over;
+    bool guessing; /* Assimp turned to guessing the format from the content: every open fails */
 } io_state;
 
 typedef struct io_file {
@@ -560,7 +561,7 @@ static enum aiReturn io_seek(struct aiFile *file, size_t offset, enum aiOrigin o
 static struct aiFile *io_open(struct aiFileIO *fio, const char *name, const char *mode)
 {
     io_state *io = (io_state *)(void *)fio->UserData;
-    if (strpbrk(mode, "wa+"))
+    if (strpbrk(mode, "wa+") || io->guessing)
         return NULL;
     FILE *disk = NULL;
     struct stat st;
@@ -605,7 +606,11 @@ static char assimp_warning[MODEL_QUOTE_MAX + 8];
 
 static void keep_warning(const char *message, char *user)
 {
-    (void)user;
+    /* When the readers of a file's extension all refuse it (a .glb that is not glTF), Assimp asks
+     * every other reader whether the content is theirs, and the course would read a format it
+     * never checked: from this line on the file cannot be opened, so none can. */
+    if (strstr(message, "File extension not known, trying signature-based detection"))
+        ((io_state *)(void *)user)->guessing = true;
     static const char *const dropping[] = {"dropped", "out of range", "out-of-range", "Ignoring"};
     if (assimp_warning[0] || (strncmp(message, "Warn", 4) != 0 && strncmp(message, "Error", 5) != 0))
         return;
@@ -666,11 +671,17 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
     char quoted[MODEL_QUOTE_MAX + 8];
     /* 1. Import and validate only: a malformed file stops here, before any post-processing step
      * (triangulation, normals) walks arrays that are not there. */
-    struct aiLogStream stream = {keep_warning, NULL};
+    struct aiLogStream stream = {keep_warning, (char *)(void *)&io};
     assimp_warning[0] = '\0';
     aiAttachLogStream(&stream);
     const struct aiScene *sc = aiImportFileEx(name, aiProcess_ValidateDataStructure, &fio);
     aiDetachLogStream(&stream);
+    if (io.guessing) {
+        if (sc)
+            aiReleaseImport(sc);
+        fail(why, n, "its content is not what its extension says (Assimp found no reader for it)");
+        return NULL;
+    }
     if (sc && !io.over && assimp_warning[0]) {
         aiReleaseImport(sc);
         fail(why, n, "%s", assimp_warning);

@@ -54,8 +54,6 @@ if ! "$cc" -std=c11 -g -O1 -D_POSIX_C_SOURCE=200809L -fsanitize=fuzzer,address,u
 fi
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
-# Full stacks for the model target, so that fuzz.lsan.supp can name the Assimp frame of a leak.
-[ "$target" = model ] && ASAN_OPTIONS="$ASAN_OPTIONS:fast_unwind_on_malloc=0"
 # Only Assimp's own leaks are suppressed, each with its reason in the file (none of the course's).
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$fuzz/fuzz.lsan.supp}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
