@@ -603,14 +603,18 @@ static void io_close(struct aiFileIO *fio, struct aiFile *file)
  * warnings (a material it could not find, 3D texture coordinates that are 2D) do not change the
  * geometry the course reads, so they pass. */
 static char assimp_warning[MODEL_QUOTE_MAX + 8];
+static io_state *importing; /* the import under way, for the log stream; NULL between imports */
 
 static void keep_warning(const char *message, char *user)
 {
+    (void)user;
+    if (!importing)
+        return;
     /* When the readers of a file's extension all refuse it (a .glb that is not glTF), Assimp asks
      * every other reader whether the content is theirs, and the course would read a format it
      * never checked: from this line on the file cannot be opened, so none can. */
     if (strstr(message, "File extension not known, trying signature-based detection"))
-        ((io_state *)(void *)user)->guessing = true;
+        importing->guessing = true;
     static const char *const dropping[] = {"dropped", "out of range", "out-of-range", "Ignoring"};
     if (assimp_warning[0] || (strncmp(message, "Warn", 4) != 0 && strncmp(message, "Error", 5) != 0))
         return;
@@ -671,11 +675,18 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
     char quoted[MODEL_QUOTE_MAX + 8];
     /* 1. Import and validate only: a malformed file stops here, before any post-processing step
      * (triangulation, normals) walks arrays that are not there. */
-    struct aiLogStream stream = {keep_warning, (char *)(void *)&io};
+    /* Attached once for the process: detaching the last stream destroys Assimp's logger, and a
+     * logger made and destroyed around every import is one more thing to go wrong. */
+    static bool attached;
+    if (!attached) {
+        struct aiLogStream stream = {keep_warning, NULL};
+        aiAttachLogStream(&stream);
+        attached = true;
+    }
     assimp_warning[0] = '\0';
-    aiAttachLogStream(&stream);
+    importing = &io;
     const struct aiScene *sc = aiImportFileEx(name, aiProcess_ValidateDataStructure, &fio);
-    aiDetachLogStream(&stream);
+    importing = NULL;
     if (io.guessing) {
         if (sc)
             aiReleaseImport(sc);
@@ -721,7 +732,9 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
      * aiApplyPostProcessing on the first import would save the read, but when a step fails
      * (FindInvalidData leaving no mesh) Assimp 5.2 releases the scene through freed memory. */
     io.used = 0;
+    importing = &io;
     const struct aiScene *done = aiImportFileEx(name, aiProcess_ValidateDataStructure | post, &fio);
+    importing = NULL;
     if (!done || io.over) {
         model_quote(done ? "" : aiGetErrorString(), quoted, sizeof quoted);
         if (done)
