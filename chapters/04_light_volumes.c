@@ -47,7 +47,7 @@ static const cli_desc cli = {
     .extras =
         {
             {"radius", "R", "radius of every light volume (chapter 05 solves one per light)",
-             NULL, "3"},
+             NULL, "3", CLI_REAL, 1e-6, 1e6},
             {"scale", "MODE", "volume mesh scale: inradius (contains the sphere) or none", scales,
              "inradius"},
         },

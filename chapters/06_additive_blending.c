@@ -51,7 +51,7 @@ static const cli_desc cli = {
         {
             {"accum", "FORMAT", "accumulation buffer format", accum_names, "rgba16f"},
             {"tonemap", "OP", "display transform of the sum", tonemaps, "none"},
-            {"exposure", "E", "scale before the exposure / reinhard tone maps", NULL, "1"},
+            {"exposure", "E", "scale before the exposure / reinhard tone maps", NULL, "1", CLI_REAL, 1e-6, 1e6},
         },
 };
 

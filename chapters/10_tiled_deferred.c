@@ -49,7 +49,7 @@ static const cli_desc cli = {
             {"path", "PATH", "light lists made by a compute shader (GL 4.3) or on the CPU (GL 3.3); default: "
                              "compute where the context has it", paths, NULL},
             {"tile-lights", "N", "most lights a tile's list holds; a tile with more loops over all of them "
-                                 "(default: no limit)", NULL, NULL},
+                                 "(default: no limit)", NULL, NULL, CLI_WHOLE, 1, 1 << 30},
         },
 };
 

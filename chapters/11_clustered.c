@@ -46,15 +46,15 @@ static const cli_desc cli = {
     .views = views,
     .extras =
         {
-            {"tile", "PIXELS", "cluster tile size in pixels (default 32)", NULL, NULL},
+            {"tile", "PIXELS", "cluster tile size in pixels (default 32)", NULL, NULL, CLI_WHOLE, 1, 4096},
             {"slices", "N",
              "view-depth slices between the near and far planes (default: as many as make the "
              "clusters about as deep as they are tall)",
-             NULL, NULL},
+             NULL, NULL, CLI_WHOLE, 1, CLUSTER_MAX_SLICES},
             {"cluster-lights", "N",
              "most lights a cluster's list holds; a cluster with more loops over all "
              "of them (default: no limit)",
-             NULL, NULL},
+             NULL, NULL, CLI_WHOLE, 1, 1 << 30},
             {"assign", "WHERE",
              "light lists made by compute shaders (GL 4.3) or on the CPU (GL 3.3); check: compute, "
              "compared with the CPU's every frame (exit 1 at the first difference); default: compute "

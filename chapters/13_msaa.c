@@ -43,7 +43,7 @@ static const cli_desc cli = {
     .views = views,
     .extras = {{"samples", "N",
                 "samples per pixel, every renderer (1: no multisampling; at most what the context offers)",
-                NULL, "4"}},
+                NULL, "4", CLI_POWER_OF_TWO, 1, MSAA_MAX_SAMPLES}},
 };
 
 enum { PASS_EDGES, PASS_PIXEL, PASS_SAMPLES }; /* msaa_deferred.frag's u_pass */
@@ -84,7 +84,7 @@ static bool make_targets(app *a)
 }
 
 /* The driver may round a sample count up: read what it made, and where its samples lie. */
-static bool read_samples(void)
+static bool read_samples(app *a)
 {
     GLint made = 1;
     if (state.samples > 1) {
@@ -93,8 +93,9 @@ static bool read_samples(void)
         glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
     }
     if (made != state.samples) {
-        log_error("--samples %d: the driver made %d samples per pixel; ask for %d", state.samples, made, made);
-        return false;
+        log_error("13_msaa: bad --samples '%d': the driver made %d samples per pixel; ask for %d", state.samples, made,
+                  made);
+        return !(a->input_error = true);
     }
     state.mean[0] = state.mean[1] = 0.5f, state.offsets[0] = state.offsets[1] = 0.5f;
     if (state.samples > 1) {
@@ -121,8 +122,10 @@ static bool read_samples(void)
 static bool init(app *a)
 {
     double n = 4;
-    if (!app_extra_number(a, "samples", 1, 1 << 20, &n) || !fbo_samples_supported((int)n, MSAA_MAX_SAMPLES, "--samples"))
-        return false;
+    /* The parser took a power of two up to MSAA_MAX_SAMPLES; the context's own limit is known now. */
+    if (!app_extra_number(a, "samples", 1, MSAA_MAX_SAMPLES, &n) ||
+        !fbo_samples_supported((int)n, MSAA_MAX_SAMPLES, "13_msaa: bad --samples"))
+        return !(a->input_error = true);
     state.samples = (int)n;
     char defines[96];
     snprintf(defines, sizeof defines, "MSAA_SAMPLES %d%s", state.samples,
@@ -141,7 +144,7 @@ static bool init(app *a)
     return state.shade_program && (state.samples == 1 || state.edge_program) && state.resolve_program &&
            present_pass_create(&state.present) &&
            gbuffer_create_with(&state.g, a->width, a->height, &(gbuffer_desc){.samples = state.samples}) &&
-           read_samples() && clusters_create(&state.c, &lists) && forward_create(&state.fwd) && make_targets(a);
+           read_samples(a) && clusters_create(&state.c, &lists) && forward_create(&state.fwd) && make_targets(a);
 }
 
 static bool resize(app *a)

@@ -50,16 +50,18 @@ static const cli_desc cli = {
     .views = views,
     .extras =
         {
-            {"shadow-atlas", "SIZE", "the atlas's side in texels, a power of two from 256 (default 4096)", NULL, "4096"},
+            {"shadow-atlas", "SIZE", "the atlas's side in texels, a power of two from 256 (default 4096)", NULL, "4096",
+             CLI_POWER_OF_TWO, 256, 32768},
             {"shadow-format", "FORMAT", "the atlas's depth format", formats, "d32f"},
             {"pcf", "N", "comparisons a side averaged per lookup", pcfs, "3"},
-            {"normal-offset", "TEXELS", "receivers moved along their normal by this many texels (0 to 8)", NULL, "1.5"},
-            {"slope-bias", "FACTOR", "glPolygonOffset factor of the shadow pass (0 to 16)", NULL, "2"},
-            {"shadows", "N", "shadow only the N most important lights (default: all)", NULL, NULL},
+            {"normal-offset", "TEXELS", "receivers moved along their normal by this many texels (0 to 8)", NULL, "1.5",
+             CLI_REAL, 0, 8},
+            {"slope-bias", "FACTOR", "glPolygonOffset factor of the shadow pass (0 to 16)", NULL, "2", CLI_REAL, 0, 16},
+            {"shadows", "N", "shadow only the N most important lights (default: all)", NULL, NULL, CLI_WHOLE, 0, 1 << 20},
             {"shadow-cull", "ON", "draw only the casters that meet the light's sphere and the tile's frustum",
              switches, "on"},
             {"time-step", "SECONDS", "the scene's time advances this much each frame, headless too (default 0)", NULL,
-             "0"},
+             "0", CLI_REAL, 0, 1e3},
         },
 };
 
@@ -82,15 +84,13 @@ static bool read_options(app *a, shadow_plan_desc *desc, GLenum *format, float *
     double size = 4096, offset = 1.5, bias = 2, shadows = -1;
     GLint max_size = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    /* the parser checked every range but the context's own largest texture: past it, an input error too */
+    a->input_error = app_extra(a, "shadow-atlas") && atof(app_extra(a, "shadow-atlas")) > max_size;
     if (!app_extra_number(a, "shadow-atlas", 256, max_size, &size) || !app_extra_number(a, "normal-offset", 0, 8, &offset) ||
         !app_extra_number(a, "slope-bias", 0, 16, &bias) ||
         (app_extra(a, "shadows") && !app_extra_number(a, "shadows", 0, 1 << 20, &shadows)) ||
         !app_extra_number(a, "time-step", 0, 1e3, &state.time_step))
         return false;
-    if ((int)size & ((int)size - 1)) {
-        log_error("--shadow-atlas %d: must be a power of two", (int)size);
-        return false;
-    }
     *desc = (shadow_plan_desc){.atlas_size = (int)size, .max_shadowed = (int)shadows, .pcf = atoi(app_extra(a, "pcf")),
                                .normal_offset = (float)offset, .cull = strcmp(app_extra(a, "shadow-cull"), "on") == 0};
     *format = strcmp(app_extra(a, "shadow-format"), "d16") == 0 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT32F;

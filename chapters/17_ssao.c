@@ -45,9 +45,11 @@ static const cli_desc cli = {
     .views = views,
     .extras =
         {
-            {"ao-radius", "UNITS", "how far a surface may be and still hide the sky (scene units)", NULL, "0.5"},
-            {"ao-samples", "N", "directions per pixel, 1 to 64, each marched in 4 steps", NULL, "16"},
-            {"ao-blur", "N", "blur window 2N x 2N pixels on the same surface; 0: none", NULL, "2"},
+            {"ao-radius", "UNITS", "how far a surface may be and still hide the sky (scene units)", NULL, "0.5",
+             CLI_REAL, 1e-3, 1e3},
+            {"ao-samples", "N", "directions per pixel, 1 to 64, each marched in 4 steps", NULL, "16", CLI_WHOLE, 1,
+             SHADER_AO_MAX_SAMPLES},
+            {"ao-blur", "N", "blur window 2N x 2N pixels on the same surface; 0: none", NULL, "2", CLI_WHOLE, 0, 16},
             {"ssao", "ON", "ambient occlusion on or off (off: chapter 11's picture; key O)", switches, "on"},
         },
 };

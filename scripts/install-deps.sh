@@ -7,6 +7,7 @@ packages=(
   libglfw3-dev libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri
   python3-glad libstb-dev libcglm-dev libcmocka-dev libassimp-dev
   glslang-tools xvfb xauth twm x11-utils gnuplot-nox
+  assimp-testmodels
 )
 
 missing=()

@@ -10,6 +10,7 @@
 #include "light.h"
 #include "log.h"
 #include "platform.h"
+#include "progress.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -285,6 +286,7 @@ static int run_loop(app *a, loop *l)
 {
     int rc = EXIT_CODE_OK;
     for (bool running = true; running;) {
+        progress_frame(a->cli->program, a->frame_index, l->total); /* a line on stderr while a frame is slow */
         if (!app_hooks_minimise(&l->hooks, a, l->opt))
             return l->hooks.rc;
         platform_poll();
@@ -352,7 +354,7 @@ static int app_setup(app *a, const app_desc *desc)
     if (layout && !gbuffer_set_default_layout(layout))
         return EXIT_CODE_USAGE;
     if (!app_target_make(a) || (desc->init && !desc->init(a)))
-        return EXIT_CODE_RUNTIME;
+        return a->input_error ? EXIT_CODE_USAGE : EXIT_CODE_RUNTIME;
     if (a->gs.transparent_count > 0 && !desc->draws_glass && !app_renderer_is_forward(a))
         log_warn("%s: the scene's %d glass object(s) are not drawn by this chapter's %s renderer (chapter 12 adds "
                  "glass; --renderer forward draws it)",
@@ -380,6 +382,7 @@ static void app_close(app *a, const app_desc *desc)
 static int app_finish(app *a, loop *l, int rc)
 {
     const cli_options *opt = l->opt;
+    progress_end();
     if (rc == EXIT_CODE_OK)
         rc = app_hooks_check(&l->hooks, a, opt);
     if (rc == EXIT_CODE_OK && opt->bench && a->frame_index == l->total)

@@ -73,6 +73,8 @@ typedef struct app {
     const gl_pass_state *pass_state; /* the chapter's lighting pass state, shown by the overlay */
     char overlay_lines[320];         /* the chapter's own overlay lines, set by its frame ("": none) */
     char default_scene[4200]; /* the data folder's default scene, when no --scene was given */
+    bool input_error; /* set by init when what failed was an option's value (beyond the context's
+                       * limit): the run exits 2, not 1 */
 } app;
 
 typedef struct app_desc {

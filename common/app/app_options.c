@@ -36,12 +36,13 @@ int app_print_gl_info(const cli_options *opt, const char *program)
     if (rc != EXIT_CODE_OK)
         return rc;
     size_limits l = query_size_limits();
-    GLint draw_buffers = 0;
+    GLint draw_buffers = 0, samples = 0;
     glGetIntegerv(GL_MAX_DRAW_BUFFERS, &draw_buffers);
+    glGetIntegerv(GL_MAX_SAMPLES, &samples);
     printf("gl: backend=%s max_width=%d max_height=%d max_texture_size=%d max_renderbuffer_size=%d "
-           "max_viewport=%dx%d max_draw_buffers=%d\n",
+           "max_viewport=%dx%d max_draw_buffers=%d max_samples=%d\n",
            platform_backend_name(), l.width, l.height, l.max_tex, l.max_rb, l.max_vp[0], l.max_vp[1],
-           draw_buffers);
+           draw_buffers, samples);
     printf("gl: renderer=%s\n", (const char *)glGetString(GL_RENDERER));
     printf("gl: version=%s\n", (const char *)glGetString(GL_VERSION));
     GLint major = 0, minor = 0;

@@ -79,3 +79,33 @@ const char *data_dir_origin(void)
     data_dir();
     return state.origin;
 }
+
+bool data_dir_find(const char *given, const char *first, char *out, size_t size, char *tried, size_t tried_size)
+{
+    struct stat st;
+    size_t base = first ? strlen(first) : 0;
+    const char *sep = base > 0 && first[base - 1] != '/' ? "/" : "";
+    int n = given[0] == '/' || base == 0 ? snprintf(out, size, "%s", given)
+                                         : snprintf(out, size, "%s%s%s", first, sep, given);
+    bool fits = n > 0 && (size_t)n < size;
+    if (fits && stat(out, &st) == 0)
+        return true;
+    char cwd[4096];
+    if (base == 0 && given[0] != '/' && getcwd(cwd, sizeof cwd))
+        snprintf(tried, tried_size, "%s/%s", cwd, given);
+    else
+        snprintf(tried, tried_size, "%s", fits ? out : given);
+    if (given[0] == '/')
+        return false;
+    /* Then the data folder: `--scene assets/scenes/city.scene` from any folder. */
+    char second[4200];
+    int m = snprintf(second, sizeof second, "%s/%s", data_dir(), given);
+    if (m <= 0 || (size_t)m >= sizeof second)
+        return false;
+    size_t used = strlen(tried);
+    snprintf(tried + used, tried_size - used, " and %s (the data folder, from %s)", second, data_dir_origin());
+    if (stat(second, &st) != 0 || (size_t)m >= size)
+        return false;
+    memcpy(out, second, (size_t)m + 1);
+    return true;
+}

@@ -6,6 +6,12 @@
  *                                        executable's bin/), else the source tree it was built from
  *   data_dir_path(relative, out, size)   data_dir()/relative; false when it does not fit
  *   data_dir_origin()                    which of the four gave data_dir(), for messages
+ *   data_dir_find(given, first, out, size, tried, tried_size)
+ *                                        an input file named on a command line or in a scene: an
+ *                                        absolute `given` as it is; a relative one in the folder
+ *                                        `first` (NULL: the current folder), then in data_dir().
+ *                                        False when neither exists (or the path does not fit), with
+ *                                        `tried` listing where it looked; *out is then the first place
  */
 #ifndef COMMON_DATA_DIR_H
 #define COMMON_DATA_DIR_H
@@ -17,5 +23,6 @@ void data_dir_set(const char *dir);
 const char *data_dir(void);
 bool data_dir_path(const char *relative, char *out, size_t size);
 const char *data_dir_origin(void);
+bool data_dir_find(const char *given, const char *first, char *out, size_t size, char *tried, size_t tried_size);
 
 #endif

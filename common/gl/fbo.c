@@ -92,8 +92,17 @@ bool fbo_create(fbo *f, const fbo_desc *desc, int width, int height)
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
-        log_error("framebuffer '%s' (%dx%d) is not complete: %s", desc->name ? desc->name : "?", width, height,
-                  fbo_status_name(status));
+        /* An attachment the driver could not allocate leaves GL_OUT_OF_MEMORY behind: that is the cause
+         * to name (read here in every build, not only where the debug callback would show it). */
+        GLenum cause = GL_NO_ERROR;
+        for (GLenum e; (e = glGetError()) != GL_NO_ERROR;)
+            cause = cause == GL_NO_ERROR || e == GL_OUT_OF_MEMORY ? e : cause;
+        log_error("framebuffer '%s' (%dx%d) is not complete: %s%s%s%s", desc->name ? desc->name : "?", width, height,
+                  fbo_status_name(status), cause != GL_NO_ERROR ? ", because of " : "",
+                  cause != GL_NO_ERROR ? gl_error_name(cause) : "",
+                  cause == GL_OUT_OF_MEMORY ? " (its textures do not fit in the memory the driver has: try a "
+                                              "smaller --size)"
+                                            : "");
         fbo_destroy(f);
         return false;
     }
@@ -139,7 +148,7 @@ bool fbo_samples_supported(int n, int cap, const char *what)
     max = max < cap ? max : cap;
     if (n <= max)
         return true;
-    log_error("%s %d: this context allows at most %d (GL_MAX_SAMPLES %d, GL_MAX_COLOR_TEXTURE_SAMPLES %d, "
+    log_error("%s '%d': this context allows at most %d (GL_MAX_SAMPLES %d, GL_MAX_COLOR_TEXTURE_SAMPLES %d, "
               "GL_MAX_DEPTH_TEXTURE_SAMPLES %d)", what, n, max, max_samples, max_color, max_depth);
     return false;
 }

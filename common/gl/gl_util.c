@@ -41,7 +41,7 @@ long gl_live_objects(void) { return state.live_objects; }
 
 void gl_live_objects_add(long delta) { state.live_objects += delta; }
 
-static const char *error_name(GLenum e)
+const char *gl_error_name(GLenum e)
 {
     switch (e) {
     case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
@@ -57,7 +57,7 @@ bool gl_check(const char *where)
 {
     bool ok = true;
     for (GLenum e; (e = glGetError()) != GL_NO_ERROR;) {
-        log_error("GL error %s (0x%04x) after %s", error_name(e), e, where);
+        log_error("GL error %s (0x%04x) after %s", gl_error_name(e), e, where);
         state.errors++;
         ok = false;
     }

@@ -7,6 +7,7 @@
  *   gl_live_objects()                     objects created and not yet destroyed (leak checks)
  *   gl_live_objects_add(delta)            count objects made without the pairs above (gl_program.c's)
  *   gl_check(where)                       glGetError loop; logs and returns false on error
+ *   gl_error_name(e)                      "GL_OUT_OF_MEMORY", ... for a glGetError value
  *   gl_debug_enable()                     KHR_debug messages to the log; errors are remembered
  *   gl_debug_error_count()                GL errors seen since gl_debug_enable (or by gl_check)
  *   gl_draw_fullscreen()                  one triangle covering the viewport (gl_VertexID based)
@@ -59,6 +60,7 @@ long gl_live_objects(void);
 void gl_live_objects_add(long delta);
 
 bool gl_check(const char *where);
+const char *gl_error_name(GLenum e);
 void gl_debug_enable(void);
 long gl_debug_error_count(void);
 

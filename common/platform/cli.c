@@ -1,8 +1,11 @@
 /* cli.c - see cli.h. */
 #include "cli.h"
 
+#include "data_dir.h"
+#include "input_script.h"
 #include "keys.h"
 #include "log.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -10,6 +13,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 
 int cli_choice_index(const char *const *choices, const char *value)
@@ -113,7 +117,9 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "                           fail if a frame was drawn while minimised or GL objects leaked\n"
             "                           (exit 77 when nothing can minimise it: no window manager)\n"
             "  --camera \"POSE\"          the scene's camera with these attributes replaced, as in a\n"
-            "                           scene's camera line: \"eye X Y Z target X Y Z [up X Y Z] [fovy F]\"\n"
+            "                           scene's camera line: \"eye X Y Z target X Y Z [up X Y Z] [fovy F]\n"
+            "                           [near N] [far F]\" (fovy 0.01..180 degrees, near > 0, far / near\n"
+            "                           at most 2^24: what a depth buffer can hold)\n"
             "  --falloff hard|windowed  how lights fade to their radius (default: the scene's, else hard):\n"
             "                           windowed multiplies by (1 - (d/r)^4)^2, so the cut-off leaves no step\n"
             "  --gbuffer LAYOUT         the G-buffer's formats (common/render/gbuffer.h, docs/02_mrt_gbuffer.md):\n"
@@ -134,7 +140,8 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --script FILE            timed keys and mouse events, as if typed (format:\n"
             "                           common/platform/input_script.h; the tests drive the window with it)\n"
             "  --gl-info                print the GL context's renderer, version and limits, then exit\n"
-            "  --verbose                more log lines\n",
+            "  --verbose                more log lines\n"
+            "  --quiet                  no progress lines (written while frames take more than 2 s)\n",
             desc->default_cutoff);
     keys_print_help(stream, desc->program, desc->views != NULL);
     fprintf(stream, "\nexit codes: 0 ok, 1 runtime failure, 2 usage or input error, 77 no GL context\n");
@@ -237,6 +244,7 @@ static const struct flag_option {
     {"--paused", offsetof(cli_options, paused)},
     {"--gl-debug", offsetof(cli_options, gl_debug)},
     {"--verbose", offsetof(cli_options, verbose)},
+    {"--quiet", offsetof(cli_options, quiet)},
     {"--gl-info", offsetof(cli_options, gl_info)},
     {"--overlay", offsetof(cli_options, overlay)},
 };
@@ -324,6 +332,45 @@ static int parse_choice(const cli_desc *desc, const char *what, const char *valu
     return usage_error(desc, fmt, value ? value : "");
 }
 
+/* "1, 2, 4, 8, 16 or 32": every power of two in [lo, hi], written out. */
+static void powers_of_two(double lo, double hi, char *out, size_t size)
+{
+    size_t n = 0;
+    out[0] = '\0';
+    for (double p = 1; p <= hi && n + 24 < size; p *= 2)
+        if (p >= lo)
+            n += (size_t)snprintf(out + n, size - n, "%s%.0f", n ? ", " : "", p);
+    char *last = strrchr(out, ',');
+    if (last) { /* "1, 2, 4" -> "1, 2 or 4" */
+        char tail[32];
+        snprintf(tail, sizeof tail, " or%s", last + 1);
+        snprintf(last, size - (size_t)(last - out), "%s", tail);
+    }
+}
+
+/* A chapter's number option: the value's shape and range, with the range written out. */
+static int parse_extra_number(const cli_desc *desc, const cli_extra *e, const char *v, const char **out)
+{
+    double d = 0.0;
+    bool ok = cli_parse_double(v, e->lo, e->hi, &d);
+    if (ok && e->number != CLI_REAL)
+        ok = d == floor(d) && strpbrk(v, ".eExX") == NULL; /* "4.0" or "4e0" is not written as a count */
+    if (ok && e->number == CLI_POWER_OF_TWO)
+        ok = d >= 1 && frexp(d, &(int){0}) == 0.5;
+    if (ok) {
+        *out = v;
+        return EXIT_CODE_OK;
+    }
+    char fmt[400], range[200];
+    if (e->number == CLI_POWER_OF_TWO)
+        powers_of_two(e->lo, e->hi, range, sizeof range);
+    else
+        snprintf(range, sizeof range, "%s from %.15g to %.15g", e->number == CLI_WHOLE ? "a whole number" : "a number",
+                 e->lo, e->hi);
+    snprintf(fmt, sizeof fmt, "bad --%s '%%s': expected %s", e->name, range);
+    return usage_error(desc, fmt, v);
+}
+
 /* --NAME VALUE of the chapter's own options. */
 static int parse_extra(int argc, char **argv, int *i, const cli_desc *desc, cli_options *out)
 {
@@ -335,6 +382,8 @@ static int parse_extra(int argc, char **argv, int *i, const cli_desc *desc, cli_
             continue;
         if (!(v = option_value(argc, argv, i, opt)))
             return usage_error(desc, "%s needs a value", opt);
+        if (desc->extras[k].number != CLI_TEXT)
+            return parse_extra_number(desc, &desc->extras[k], v, &out->extra_values[k]);
         if (!desc->extras[k].choices) {
             out->extra_values[k] = v;
             return EXIT_CODE_OK;
@@ -434,6 +483,71 @@ static int parse_argument(int argc, char **argv, int *i, const cli_desc *desc, c
     return usage_error(desc, "unexpected argument '%s'", a);
 }
 
+/* --scene or --script: found in the current folder or the data folder, and a regular file. */
+static int find_input(const cli_desc *desc, const char *option, const char *what, const char **path, char *found,
+                      size_t size)
+{
+    char tried[9000];
+    struct stat st;
+    if (!data_dir_find(*path, NULL, found, size, tried, sizeof tried)) {
+        log_error("%s: cannot open %s: No such file or directory (looked for %s)", *path, what, tried);
+        return EXIT_CODE_USAGE;
+    }
+    if (stat(found, &st) != 0 || !S_ISREG(st.st_mode)) {
+        log_error("%s: cannot open %s: not a regular file%s (%s)", found, what,
+                  S_ISDIR(st.st_mode) ? " but a folder" : "", option);
+        return EXIT_CODE_USAGE;
+    }
+    *path = found;
+    (void)desc;
+    return EXIT_CODE_OK;
+}
+
+/* --screenshot: its folder found in the current folder, then the data folder; the file itself is
+ * written later (atomically, image.c), but a folder that is not there is known now. */
+static int find_output(const char **path, char *found, size_t size)
+{
+    const char *slash = strrchr(*path, '/');
+    char dir[4200], tried[9000], where[4200];
+    struct stat st;
+    if (!slash)
+        return EXIT_CODE_OK; /* the current folder */
+    snprintf(dir, sizeof dir, "%.*s", slash == *path ? 1 : (int)(slash - *path), *path);
+    if (!data_dir_find(dir, NULL, where, sizeof where, tried, sizeof tried) || stat(where, &st) != 0 ||
+        !S_ISDIR(st.st_mode)) {
+        log_error("cannot write %s: No such file or directory (no folder %s: looked for %s)", *path, dir, tried);
+        return EXIT_CODE_USAGE;
+    }
+    int n = snprintf(found, size, "%s%s", where, slash);
+    if (n < 0 || (size_t)n >= size || (stat(found, &st) == 0 && S_ISDIR(st.st_mode))) {
+        log_error("cannot write %s: %s", *path, n >= 0 && (size_t)n < size ? "it is a folder" : "path too long");
+        return EXIT_CODE_USAGE;
+    }
+    *path = found;
+    return EXIT_CODE_OK;
+}
+
+/* The files the options name: there, readable, and (a script) well formed, before any work. */
+static int check_inputs(const cli_desc *desc, cli_options *out)
+{
+    data_dir_set(out->data_dir);
+    progress_set_quiet(out->quiet);
+    int rc = EXIT_CODE_OK;
+    if (out->scene_path)
+        rc = find_input(desc, "--scene", "scene", &out->scene_path, out->scene_found, sizeof out->scene_found);
+    if (rc == EXIT_CODE_OK && out->script)
+        rc = find_input(desc, "--script", "script", &out->script, out->script_found, sizeof out->script_found);
+    if (rc == EXIT_CODE_OK && out->screenshot)
+        rc = find_output(&out->screenshot, out->screenshot_found, sizeof out->screenshot_found);
+    input_script s;
+    if (rc == EXIT_CODE_OK && out->script) {
+        if (!input_script_load(out->script, &s))
+            return EXIT_CODE_USAGE;
+        input_script_destroy(&s);
+    }
+    return rc;
+}
+
 int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
 {
     set_defaults(desc, out);
@@ -455,5 +569,5 @@ int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out)
                            out->script ? "--script" : "--overlay");
     if (out->minimise_cycle > 0 && out->bench)
         return usage_error(desc, "%s stops the frames it would time: not with --bench", "--minimise-cycle");
-    return EXIT_CODE_OK;
+    return check_inputs(desc, out);
 }

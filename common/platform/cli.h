@@ -7,8 +7,12 @@
  *                                          (both false, without a message, when it is not)
  *
  * A chapter describes what it adds (renderers, views, extra options) in a
- * cli_desc; the parser knows the rest. Values are validated here, so the
- * rest of the course can trust them.
+ * cli_desc; the parser knows the rest. Values are validated here, before any
+ * context or work, so the rest of the course can trust them: numbers and their
+ * ranges, choices, and the input files. A relative --scene or --script is
+ * looked for in the current folder, then in the data folder (--data-dir is set
+ * here for that); the script is read and checked whole (input_script.h).
+ * --screenshot's folder is found the same way, and must exist.
  */
 #ifndef COMMON_CLI_H
 #define COMMON_CLI_H
@@ -26,13 +30,24 @@
 
 enum { CLI_PARSE_DONE = -1 }; /* cli_parse: --help was printed, exit 0 */
 
-/* An option a chapter adds: --NAME VALUE, VALUE one of choices (NULL-terminated) or free text. */
+/* What a chapter's option takes when it has no choices: free text, or a number checked here. */
+typedef enum cli_number {
+    CLI_TEXT,
+    CLI_REAL,         /* a finite number in [lo, hi] */
+    CLI_WHOLE,        /* a whole number in [lo, hi] */
+    CLI_POWER_OF_TWO, /* a whole number in [lo, hi] that is a power of two (sample counts) */
+} cli_number;
+
+/* An option a chapter adds: --NAME VALUE, VALUE one of choices (NULL-terminated), a number
+ * (number, lo, hi), or free text. */
 typedef struct cli_extra {
     const char *name;
     const char *metavar;
     const char *help;
     const char *const *choices;
     const char *default_value;
+    cli_number number;
+    double lo, hi;
 } cli_extra;
 
 typedef struct cli_desc {
@@ -70,11 +85,14 @@ typedef struct cli_options {
     int resize_cycle;     /* resize N times after the first frame, then check for leaked GL objects */
     int minimise_cycle;   /* window: minimise and restore N times; no frame may be drawn while minimised */
     bool verbose;
+    bool quiet;           /* no progress lines while slow frames run (common/base/progress.h) */
     bool gl_info;         /* print the context's renderer, version and limits, and exit */
     const char *script;   /* timed keys and mouse events (common/platform/input_script.h) */
     bool overlay;         /* the overlay on from the start, and in --screenshot */
     const char *compare;  /* "off", "split" or "difference": forward beside the chapter's renderer */
     const char *extra_values[CLI_MAX_EXTRAS];
+    char scene_found[4200], script_found[4200]; /* where --scene and --script were found */
+    char screenshot_found[4200];                /* --screenshot in the folder that was found */
 } cli_options;
 
 int cli_parse(int argc, char **argv, const cli_desc *desc, cli_options *out);

@@ -1,19 +1,20 @@
 /* input_script.c - see input_script.h. */
 #include "input_script.h"
 
-#include "cli.h"
 #include "input.h"
 #include "keys.h"
 #include "log.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define SCRIPT_LINE_MAX 1024
 #define SCRIPT_FRAME_MAX 10000000L
-#define SCRIPT_EVENTS_MAX 1000000
+#define SCRIPT_BYTES_MAX (64L << 20) /* a file larger than this is no hand-written script */
 
 static const char *const kind_names[] = {
     [SCRIPT_KEY] = "key",         [SCRIPT_DOWN] = "down",       [SCRIPT_UP] = "up",
@@ -22,11 +23,27 @@ static const char *const kind_names[] = {
     [SCRIPT_OBJECTS_MARK] = "objects", [SCRIPT_QUIT] = "quit",
 };
 
+#define SCRIPT_PATH_MAX 255
+
 /* One line's event, before its frame range is expanded. */
 typedef struct parsed {
     long first, last;
     script_event ev;
+    char path[SCRIPT_PATH_MAX + 1];
 } parsed;
+
+/* The whole of `text` as a number in [lo, hi] (the command line's rules; cli.c reads scripts, so
+ * this file does not include it). */
+static bool parse_number(const char *text, double lo, double hi, bool whole, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = whole ? (double)strtol(text, &end, 10) : strtod(text, &end);
+    if (errno || end == text || *end || !isfinite(v) || v < lo || v > hi)
+        return false;
+    *out = v;
+    return true;
+}
 
 static bool parse_frames(const char *word, long *first, long *last)
 {
@@ -36,10 +53,10 @@ static bool parse_frames(const char *word, long *first, long *last)
     if (n == 0 || n >= sizeof head)
         return false;
     memcpy(head, word, n), head[n] = '\0';
-    int a = 0, b = 0;
-    if (!cli_parse_int(head, 0, SCRIPT_FRAME_MAX, &a) || (dash && !cli_parse_int(dash + 1, a, SCRIPT_FRAME_MAX, &b)))
+    double a = 0, b = 0;
+    if (!parse_number(head, 0, SCRIPT_FRAME_MAX, true, &a) || (dash && !parse_number(dash + 1, a, SCRIPT_FRAME_MAX, true, &b)))
         return false;
-    *first = a, *last = dash ? b : a;
+    *first = (long)a, *last = dash ? (long)b : (long)a;
     return true;
 }
 
@@ -50,8 +67,9 @@ static bool parse_button(const char *word, int *button)
 }
 
 /* The arguments of `kind` from the words after it; false with *why set when they are wrong. */
-static bool parse_args(script_event *ev, char **w, int n, const char **why)
+static bool parse_args(parsed *line, char **w, int n, const char **why)
 {
+    script_event *ev = &line->ev;
     double x = 0.0, y = 0.0;
     switch (ev->kind) {
     case SCRIPT_KEY:
@@ -61,7 +79,7 @@ static bool parse_args(script_event *ev, char **w, int n, const char **why)
         return n == 1 && (ev->code = keys_code(w[0])) != 0;
     case SCRIPT_MOVE:
         *why = "expected X Y, framebuffer pixels";
-        if (n != 2 || !cli_parse_double(w[0], -1e6, 1e6, &x) || !cli_parse_double(w[1], -1e6, 1e6, &y))
+        if (n != 2 || !parse_number(w[0], -1e6, 1e6, false, &x) || !parse_number(w[1], -1e6, 1e6, false, &y))
             return false;
         ev->x = x, ev->y = y;
         return true;
@@ -69,12 +87,12 @@ static bool parse_args(script_event *ev, char **w, int n, const char **why)
     case SCRIPT_RELEASE: *why = "expected left or right"; return n == 1 && parse_button(w[0], &ev->code);
     case SCRIPT_SCROLL:
         *why = "expected wheel steps";
-        return n == 1 && cli_parse_double(w[0], -1e3, 1e3, &ev->y);
+        return n == 1 && parse_number(w[0], -1e3, 1e3, false, &ev->y);
     case SCRIPT_SCREENSHOT:
         *why = "expected a file name ending in .png, .bmp, .tga or .jpg";
-        if (n != 1 || strlen(w[0]) >= sizeof ev->path)
+        if (n != 1 || strlen(w[0]) > SCRIPT_PATH_MAX)
             return false;
-        strcpy(ev->path, w[0]);
+        strcpy(line->path, w[0]);
         return true;
     case SCRIPT_OBJECTS_MARK:
         *why = "expected mark or check";
@@ -108,21 +126,40 @@ static bool parse_line(char *line, const char *name, int number, parsed *out)
     }
     out->ev.kind = (script_kind)k;
     const char *why = "";
-    if (!parse_args(&out->ev, w + 2, n - 2, &why)) {
+    if (!parse_args(out, w + 2, n - 2, &why)) {
         log_error("%s:%d: %s: %s", name, number, w[1], why);
         return false;
     }
     return true;
 }
 
-static bool append(input_script *s, const parsed *p, int *cap)
+static bool append(input_script *s, parsed *p, int *cap)
 {
+    if (p->ev.kind == SCRIPT_SCREENSHOT) { /* one copy of the file name for the whole range */
+        char **grown = realloc(s->paths, (size_t)(s->path_count + 1) * sizeof *grown);
+        char *copy = grown ? strdup(p->path) : NULL;
+        if (grown)
+            s->paths = grown;
+        if (!copy) {
+            log_error("%s:%d: out of memory", s->name, p->ev.line);
+            return false;
+        }
+        s->paths[s->path_count++] = copy;
+        p->ev.path = copy;
+    }
     for (long f = p->first; f <= p->last; f++) {
         if (s->count == *cap) {
-            int grown_cap = *cap ? *cap * 2 : 64;
-            script_event *grown = grown_cap <= SCRIPT_EVENTS_MAX ? realloc(s->events, (size_t)grown_cap * sizeof *grown) : NULL;
+            /* The limit is checked before the allocation and holds exactly: the last growth
+             * stops at SCRIPT_EVENTS_MAX rather than doubling past it. */
+            if (*cap == SCRIPT_EVENTS_MAX) {
+                log_error("%s:%d: more than %d events (a FRAME-LAST range counts one event per frame)", s->name,
+                          p->ev.line, SCRIPT_EVENTS_MAX);
+                return false;
+            }
+            int grown_cap = *cap ? (*cap > SCRIPT_EVENTS_MAX / 2 ? SCRIPT_EVENTS_MAX : *cap * 2) : 64;
+            script_event *grown = realloc(s->events, (size_t)grown_cap * sizeof *grown);
             if (!grown) {
-                log_error("%s:%d: more than %d events", s->name, p->ev.line, SCRIPT_EVENTS_MAX);
+                log_error("%s:%d: out of memory for %d events", s->name, p->ev.line, grown_cap);
                 return false;
             }
             s->events = grown, *cap = grown_cap;
@@ -172,12 +209,35 @@ bool input_script_parse(const char *text, const char *name, input_script *s)
     }
     if (s->count > 0)
         qsort(s->events, (size_t)s->count, sizeof *s->events, by_frame);
+    /* A check compares with the count its mark remembered: without a mark before it (an earlier
+     * frame, or an earlier line of the same frame) it would compare with nothing. */
+    for (int i = 0; i < s->count && s->events[i].kind != SCRIPT_OBJECTS_MARK; i++)
+        if (s->events[i].kind == SCRIPT_OBJECTS_CHECK) {
+            log_error("%s:%d: objects check: no 'objects mark' before it (at an earlier frame, or earlier in "
+                      "frame %ld) to compare with", name, s->events[i].line, s->events[i].frame);
+            input_script_destroy(s);
+            return false;
+        }
     return true;
 }
 
 bool input_script_load(const char *path, input_script *s)
 {
     memset(s, 0, sizeof *s);
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        log_error("%s: cannot open script: %s", path, strerror(errno));
+        return false;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        log_error("%s: cannot open script: not a regular file%s", path, S_ISDIR(st.st_mode) ? " (a folder)" : "");
+        return false;
+    }
+    if (st.st_size > SCRIPT_BYTES_MAX) {
+        log_error("%s: script of %lld bytes: more than the %ld a script may hold", path, (long long)st.st_size,
+                  SCRIPT_BYTES_MAX);
+        return false;
+    }
     FILE *f = fopen(path, "rb");
     if (!f) {
         log_error("%s: cannot open script: %s", path, strerror(errno));
@@ -210,9 +270,13 @@ bool input_script_load(const char *path, input_script *s)
 
 void input_script_destroy(input_script *s)
 {
+    for (int i = 0; i < s->path_count; i++)
+        free(s->paths[i]);
+    free(s->paths);
     free(s->events);
+    s->paths = NULL;
     s->events = NULL;
-    s->count = 0;
+    s->count = s->path_count = 0;
 }
 
 void input_script_range(const input_script *s, long frame, int *first, int *count)

@@ -24,11 +24,17 @@
  *   objects mark | objects check      after the frame: remember the number of live GL objects /
  *                                     fail the run unless it is the remembered number (leaks)
  *   quit         after the frame: stop
+ *
+ * Limits, checked while parsing: frames 0..10,000,000; at most SCRIPT_EVENTS_MAX events after
+ * ranges are expanded (a range FRAME-LAST is one event per frame); 1023 characters a line; a
+ * regular file of at most 64 MiB. `objects check` needs an `objects mark` before it.
  */
 #ifndef COMMON_INPUT_SCRIPT_H
 #define COMMON_INPUT_SCRIPT_H
 
 #include <stdbool.h>
+
+#define SCRIPT_EVENTS_MAX 1000000
 
 typedef enum script_kind {
     SCRIPT_KEY,
@@ -50,13 +56,15 @@ typedef struct script_event {
     script_kind kind;
     int code;    /* key code, or mouse button */
     double x, y; /* move: the cursor; scroll: y */
-    char path[256];
+    const char *path; /* screenshot: the file, owned by the script (one copy a line, shared by its range) */
     int line;
 } script_event;
 
 typedef struct input_script {
     script_event *events; /* sorted by frame, file order kept within a frame */
     int count;
+    char **paths; /* the screenshot lines' files */
+    int path_count;
     char name[256];
 } input_script;
 

@@ -2,13 +2,17 @@
 #include "mesh_data.h"
 
 #include "log.h"
+#include "model_file.h"
 
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static bool mesh_alloc(mesh_data *m, int vertices, int indices)
 {
@@ -286,15 +290,20 @@ static void copy_node(const struct aiScene *sc, const struct aiNode *node, struc
         copy_node(sc, node->mChildren[c], world, m, vbase, ibase);
 }
 
-bool mesh_data_load(mesh_data *m, const char *path, const char *origin)
+/* The steps after the validated import (model_file.c): triangles and welded vertices with normals. */
+#define MESH_POST_STEPS                                                                                        \
+    (aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |                    \
+     aiProcess_FindDegenerates | aiProcess_SortByPType | aiProcess_FindInvalidData)
+
+static bool load_bytes(mesh_data *m, const char *path, const char *data, size_t size, bool siblings,
+                       const model_limits *lim, const char *pre)
 {
-    memset(m, 0, sizeof *m);
-    const char *pre = origin ? origin : path;
-    const struct aiScene *sc =
-        aiImportFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
-                               aiProcess_FindDegenerates | aiProcess_SortByPType | aiProcess_FindInvalidData);
-    if (!sc || !sc->mRootNode) {
-        log_error("%s: cannot load model '%s': %s", pre, path, aiGetErrorString());
+    char why[512];
+    const char *format = model_format_of(path);
+    const struct aiScene *sc = NULL;
+    if (!model_prescan(data, size, format, lim, why, sizeof why) ||
+        !(sc = model_import(path, data, size, siblings, lim, MESH_POST_STEPS, why, sizeof why))) {
+        log_error("%s: cannot load model '%s': %s", pre, path, why);
         return false;
     }
     int verts = 0, idx = 0;
@@ -321,6 +330,62 @@ bool mesh_data_load(mesh_data *m, const char *path, const char *origin)
     }
     aiReleaseImport(sc);
     return ok;
+}
+
+/* The limits, and a file name the course reads (by its extension); false with the error logged. */
+static bool load_check(const char *path, const char *pre, model_limits *lim)
+{
+    char why[256];
+    if (!model_limits_get(lim, why, sizeof why)) {
+        log_error("%s: cannot load model '%s': %s", pre, path, why);
+        return false;
+    }
+    if (!model_format_of(path)) {
+        log_error("%s: cannot load model '%s': not a format the course reads (.obj, .ply, .off, .stl, .gltf, .glb)",
+                  pre, path);
+        return false;
+    }
+    return true;
+}
+
+bool mesh_data_load(mesh_data *m, const char *path, const char *origin)
+{
+    memset(m, 0, sizeof *m);
+    const char *pre = origin ? origin : path;
+    model_limits lim;
+    if (!load_check(path, pre, &lim))
+        return false;
+    /* The whole file is read here, within the limit, so what was checked is what Assimp reads. */
+    struct stat st;
+    FILE *f = NULL;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || !(f = fopen(path, "rb"))) {
+        log_error("%s: cannot load model '%s': %s", pre, path, errno && !f ? strerror(errno) : "not a regular file");
+        return false;
+    }
+    if (st.st_size > lim.bytes) {
+        log_error("%s: cannot load model '%s': %lld bytes, more than the limit of %lld (COURSE_MODEL_MAX_BYTES)", pre,
+                  path, (long long)st.st_size, lim.bytes);
+        fclose(f);
+        return false;
+    }
+    size_t size = (size_t)st.st_size;
+    char *data = malloc(size ? size : 1);
+    bool ok = data && fread(data, 1, size, f) == size;
+    fclose(f);
+    if (!ok)
+        log_error("%s: cannot load model '%s': cannot read its %zu bytes", pre, path, size);
+    else
+        ok = load_bytes(m, path, data, size, true, &lim, pre);
+    free(data);
+    return ok;
+}
+
+bool mesh_data_load_memory(mesh_data *m, const char *name, const void *data, size_t size, const char *origin)
+{
+    memset(m, 0, sizeof *m);
+    const char *pre = origin ? origin : name;
+    model_limits lim;
+    return load_check(name, pre, &lim) && load_bytes(m, name, data, size, false, &lim, pre);
 }
 
 void mesh_data_destroy(mesh_data *m)

@@ -4,8 +4,12 @@
  *   mesh_data_plane(m)                   unit square at y = 0, normal +Y, single-sided
  *   mesh_data_sphere(m, slices, stacks)  unit UV sphere: 2*slices*(stacks-1) triangles
  *   mesh_data_icosphere(m, subdivisions) unit-circumradius icosphere (20 * 4^n triangles)
- *   mesh_data_load(m, path, origin)      a model file through Assimp (OBJ, PLY, glTF, ...);
- *                                        origin ("scene.scene:7") prefixes error messages
+ *   mesh_data_load(m, path, origin)      a model file through Assimp (.obj, .ply, .off, .stl, .gltf,
+ *                                        .glb), within the limits of model_file.h and validated before
+ *                                        any post-processing; origin ("scene.scene:7") prefixes errors
+ *   mesh_data_load_memory(m, name, data, size, origin)
+ *                                        the same from bytes (format from name's extension; files
+ *                                        the model names are not read): the fuzz target's way in
  *   mesh_data_from_scene(m, s, decl)     the mesh a scene's `mesh` line declares (built-in or
  *                                        file), errors at that line
  *   mesh_data_destroy(m)
@@ -21,6 +25,7 @@
 #include "shader_layout.h"
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #define MESH_VERTEX_FLOATS SHADER_MESH_VERTEX_FLOATS /* written once: chapter 16's shader reads them */
@@ -39,6 +44,7 @@ bool mesh_data_plane(mesh_data *m);
 bool mesh_data_sphere(mesh_data *m, int slices, int stacks);
 bool mesh_data_icosphere(mesh_data *m, int subdivisions);
 bool mesh_data_load(mesh_data *m, const char *path, const char *origin);
+bool mesh_data_load_memory(mesh_data *m, const char *name, const void *data, size_t size, const char *origin);
 bool mesh_data_from_scene(mesh_data *m, const scene *s, const scene_mesh *decl);
 void mesh_data_destroy(mesh_data *m);
 double mesh_data_inradius(const mesh_data *m);

@@ -22,6 +22,12 @@
 
 #define SCENE_NAME_MAX 64
 #define SCENE_PATH_MAX 1024
+/* A camera's limits. fovy: below 0.01 degrees the projection magnifies by more than 10^4 and a
+ * 1e-30 degree view is a black picture. far/near: 2^24; beyond it the farther half of the view,
+ * [far/2, far], falls into a single step of a 24-bit or a 32-bit float depth buffer (whose
+ * precision near 1.0 is 2^-24), so every surface there fights every other. */
+#define SCENE_FOVY_MIN 0.01
+#define SCENE_DEPTH_RATIO_MAX 16777216.0
 
 typedef enum scene_mesh_kind {
     SCENE_MESH_CUBE,

@@ -5,6 +5,8 @@
  */
 #include "scene_internal.h"
 
+#include "data_dir.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -33,6 +35,9 @@ static bool take_camera_attribute(parser *p, scene_camera *c, unsigned *seen)
         if (!(c->fovy_deg < 180.0f))
             return scene_parser_fail(p, "camera fovy: must be between 0 and 180 degrees, got '%s'",
                                      scene_parser_show_token(p->tok[p->pos - 1]).text);
+        if (!(c->fovy_deg >= (float)SCENE_FOVY_MIN))
+            return scene_parser_fail(p, "camera fovy: must be at least %g degrees, got '%s'", SCENE_FOVY_MIN,
+                                     scene_parser_show_token(p->tok[p->pos - 1]).text);
         return true;
     case CAMERA_NEAR: return scene_parser_take_number(p, "camera near", NUMBER_POSITIVE, &c->near_plane);
     case CAMERA_FAR: return scene_parser_take_number(p, "camera far", NUMBER_POSITIVE, &c->far_plane);
@@ -50,6 +55,10 @@ static bool check_camera(parser *p, scene_camera *c, unsigned seen)
     if (!(c->far_plane > c->near_plane))
         return scene_parser_fail(p, "camera: far (%g) must be greater than near (%g)", c->far_plane,
                                  c->near_plane);
+    if (!((double)c->far_plane / c->near_plane <= SCENE_DEPTH_RATIO_MAX))
+        return scene_parser_fail(p, "camera: far / near is %g, more than a depth buffer can hold (%.0f = 2^24: "
+                                 "the farther half of the view would share one depth step)",
+                                 (double)c->far_plane / c->near_plane, SCENE_DEPTH_RATIO_MAX);
     vec3 view, side;
     glm_vec3_sub(c->target, c->eye, view);
     float view_len = glm_vec3_norm(view);
@@ -167,16 +176,17 @@ static bool parse_material(parser *p)
     return scene_parser_add_name(p, &p->material_names, m.name, p->s.material_count - 1);
 }
 
-/* Model paths are relative to the scene file's folder; absolute paths are kept. */
+/* Model paths are relative to the scene file's folder, then to the data folder; absolute paths are
+ * kept. */
 static bool resolve_model(parser *p, const char *given, char out[SCENE_PATH_MAX])
 {
-    size_t base = strlen(p->base_dir);
-    const char *sep = base > 0 && p->base_dir[base - 1] != '/' ? "/" : "";
-    int n = given[0] == '/' || base == 0 ? snprintf(out, SCENE_PATH_MAX, "%s", given)
-                                         : snprintf(out, SCENE_PATH_MAX, "%s%s%s", p->base_dir, sep, given);
-    if (n < 0 || n >= SCENE_PATH_MAX)
+    size_t base = given[0] == '/' ? 0 : strlen(p->base_dir);
+    if (base + 1 + strlen(given) >= SCENE_PATH_MAX)
         return scene_parser_fail(p, "model path '%s' is longer than %d characters",
                                  scene_parser_show_token(given).text, SCENE_PATH_MAX - 1);
+    char tried[2 * SCENE_PATH_MAX + 4400];
+    if (!data_dir_find(given, p->base_dir, out, SCENE_PATH_MAX, tried, sizeof tried))
+        return scene_parser_fail(p, "cannot open model '%s': No such file or directory (looked for %s)", out, tried);
     /* Only check that the file is there and readable: the mesh loader reads it later. */
     FILE *f = fopen(out, "rb");
     if (!f)

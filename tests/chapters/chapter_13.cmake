@@ -70,7 +70,8 @@ function(chapter_13_tests)
   add_test(NAME chapters.13_too_many_samples COMMAND ${C} --headless --size 64x64 --frames 1 --samples 64
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(chapters.13_too_many_samples PROPERTIES LABELS golden
-    PASS_REGULAR_EXPRESSION "--samples 64: this context allows at most [0-9]+ \\(GL_MAX_SAMPLES")
+    PASS_REGULAR_EXPRESSION "bad --samples '64': expected 1, 2, 4, 8, 16 or 32")
+  # (above the context's own limit but within 32: robust.options, which asks the context for it)
   add_test(NAME chapters.13_bad_samples COMMAND ${C} --headless --samples 0 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(chapters.13_bad_samples PROPERTIES LABELS golden WILL_FAIL TRUE)
 endfunction()

@@ -1,15 +1,18 @@
-# Fuzzing the parsers the course owns: the scene format (scene_parse_string) and the command line
-# (cli_parse). Targets and seeds live in tests/fuzz/; see docs/testing.md.
+# Fuzzing every input the course reads: the scene format (scene_parse_string), the command line
+# (cli_parse), the --script format (input_script_parse) and model files (mesh_data_load_memory,
+# Assimp included). Targets and seeds live in tests/fuzz/; see docs/testing.md.
 #
-#   fuzz.replay.scene / fuzz.replay.cli (label unit): the seeds and every saved crash in
+#   fuzz.replay.TARGET (label unit): the seeds and every saved crash in
 #       tests/fuzz/regressions/ replayed through the target with this tree's compiler (and its
 #       sanitizers, in the asan tree).
-#   fuzz.scene / fuzz.cli (label fuzz): a short libFuzzer run, compiled with clang by run_fuzz.sh,
+#   fuzz.TARGET (label fuzz): a short libFuzzer run, compiled with clang by run_fuzz.sh,
 #       when clang is installed.
-#   COURSE_FUZZ=ON with clang (preset `fuzz`): build/bin/fuzz_scene and fuzz_cli for long runs.
-set(COURSE_FUZZ_TARGETS scene cli)
+#   COURSE_FUZZ=ON with clang (preset `fuzz`): build/bin/fuzz_TARGET for long runs.
+set(COURSE_FUZZ_TARGETS scene cli script model)
 set(COURSE_FUZZ_SECONDS_scene 20)
 set(COURSE_FUZZ_SECONDS_cli 6)
+set(COURSE_FUZZ_SECONDS_script 6)
+set(COURSE_FUZZ_SECONDS_model 10)
 
 foreach(target ${COURSE_FUZZ_TARGETS})
   add_executable(fuzz_${target}_replay ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c
@@ -30,15 +33,19 @@ if(COURSE_FUZZ)
   # libFuzzer's coverage instrumentation too.
   set(COURSE_FUZZ_SOURCES_scene ${CMAKE_SOURCE_DIR}/common/scene/scene.c ${CMAKE_SOURCE_DIR}/common/scene/scene_parser.c
     ${CMAKE_SOURCE_DIR}/common/scene/scene_directives.c ${CMAKE_SOURCE_DIR}/common/scene/scene_lights.c
-    ${CMAKE_SOURCE_DIR}/common/base/log.c)
-  set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/platform/cli.c ${CMAKE_SOURCE_DIR}/common/base/gbuffer_layout_names.c
-    ${CMAKE_SOURCE_DIR}/common/platform/keys.c
-    ${CMAKE_SOURCE_DIR}/common/base/log.c)
+    ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)
+  set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/platform/cli.c ${CMAKE_SOURCE_DIR}/common/platform/input_script.c
+    ${CMAKE_SOURCE_DIR}/common/platform/input.c ${CMAKE_SOURCE_DIR}/common/base/gbuffer_layout_names.c
+    ${CMAKE_SOURCE_DIR}/common/platform/keys.c ${CMAKE_SOURCE_DIR}/common/base/progress.c
+    ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)
+  set(COURSE_FUZZ_SOURCES_script ${COURSE_FUZZ_SOURCES_cli})
+  set(COURSE_FUZZ_SOURCES_model ${CMAKE_SOURCE_DIR}/common/scene/mesh_data.c
+    ${CMAKE_SOURCE_DIR}/common/scene/model_file.c ${COURSE_FUZZ_SOURCES_scene})
   foreach(target ${COURSE_FUZZ_TARGETS})
     add_executable(fuzz_${target} ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c
                    ${COURSE_FUZZ_SOURCES_${target}})
     target_include_directories(fuzz_${target} PRIVATE ${COMMON_INCLUDE_DIRS})
-    target_link_libraries(fuzz_${target} PRIVATE PkgConfig::CGLM m)
+    target_link_libraries(fuzz_${target} PRIVATE PkgConfig::CGLM PkgConfig::ASSIMP Threads::Threads m)
     target_compile_options(fuzz_${target} PRIVATE -fsanitize=fuzzer,address,undefined
                            -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
     target_link_options(fuzz_${target} PRIVATE -fsanitize=fuzzer,address,undefined)

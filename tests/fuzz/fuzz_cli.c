@@ -12,6 +12,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "fuzz_util.h"
 
@@ -59,6 +60,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (o.frames < 0 || o.warmup < 0 || !(o.cutoff >= 0.0) || (o.scene_path && !*o.scene_path))
             abort(); /* no --scene: NULL, the data folder's default scene */
         if (cli_choice_index(DESC.renderers, o.renderer) < 0 || cli_choice_index(DESC.views, o.view) < 0)
+            abort();
+        /* --scene and --script were found, and are regular files. */
+        struct stat st;
+        if ((o.scene_path && (stat(o.scene_path, &st) != 0 || !S_ISREG(st.st_mode))) ||
+            (o.script && (stat(o.script, &st) != 0 || !S_ISREG(st.st_mode))))
             abort();
         const char *mode = cli_extra_value(&DESC, &o, "mode");
         if (!mode || cli_choice_index(MODES, mode) < 0)

@@ -4,9 +4,11 @@
  *                                        object and light at a few times and free the scene
  *
  * Whatever the bytes, the parser must return true or false without reading out of bounds, leaking,
- * overflowing a signed integer or leaving half a scene behind. Model paths resolve against a
- * folder that does not exist, so a "mesh NAME file PATH" line only ever probes a missing file.
+ * overflowing a signed integer or leaving half a scene behind. Model paths resolve against folders
+ * that do not exist (the scene's and the data folder), so a "mesh NAME file PATH" line only ever
+ * probes a missing file (or an absolute path).
  */
+#include "data_dir.h"
 #include "scene.h"
 
 #include <stddef.h>
@@ -25,6 +27,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!text)
         return 0;
 
+    data_dir_set("/nonexistent-fuzz-data"); /* a model path is looked for in the data folder too */
     scene s;
     if (scene_parse_string(text, "fuzz.scene", "/nonexistent-fuzz-dir", &s)) {
         const float times[] = {-1.0f, 0.0f, 0.5f, 3.0f, 1e9f};

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # run_fuzz.sh SOURCE_DIR TARGET SECONDS OUT_DIR - a short, bounded libFuzzer run of one parser.
 #
-# TARGET is scene (common/scene/scene.c through scene_parse_string) or cli (common/platform/cli.c through cli_parse).
+# TARGET is scene (common/scene/scene.c through scene_parse_string), cli (common/platform/cli.c through
+# cli_parse), script (common/platform/input_script.c through input_script_parse) or model
+# (common/scene/mesh_data.c through mesh_data_load_memory, Assimp included).
 # The target is compiled here with clang (-fsanitize=fuzzer,address,undefined), so any build tree can
 # run this test. Steps: replay tests/fuzz/regressions/TARGET/ and the seed corpus (each must pass),
 # then fuzz for SECONDS starting from a copy of the seeds. A crash is saved in OUT_DIR as
@@ -9,17 +11,21 @@
 # Exit 77 (skipped) when clang or its libFuzzer runtime is missing.
 set -u
 if [ $# -ne 4 ]; then
-    echo "usage: $0 SOURCE_DIR scene|cli SECONDS OUT_DIR" >&2
+    echo "usage: $0 SOURCE_DIR scene|cli|script|model SECONDS OUT_DIR" >&2
     exit 2
 fi
 src=$1 target=$2 seconds=$3 out=$4
 fuzz=$src/tests/fuzz
 case $target in
-    scene) sources="$src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_lights.c $src/common/base/log.c" ;;
-    cli) sources="$src/common/platform/cli.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c" ;;
+    scene) sources="$src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_lights.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
+    cli) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c $src/common/base/data_dir.c $src/common/base/progress.c" ;;
+    script) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c $src/common/base/data_dir.c $src/common/base/progress.c" ;;
+    model) sources="$src/common/scene/mesh_data.c $src/common/scene/model_file.c $src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_lights.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
     *) echo "unknown fuzz target '$target'" >&2; exit 2 ;;
 esac
 
+libs="-pthread"
+[ "$target" = model ] && libs="$libs $(pkg-config --libs assimp)"
 cc=${FUZZ_CC:-clang}
 if ! command -v "$cc" >/dev/null 2>&1; then
     echo "skip: $cc not found (the fuzz targets need clang's libFuzzer)"
@@ -35,7 +41,7 @@ probe='int LLVMFuzzerTestOneInput(const char *d, long n) { (void)d; return (int)
 # shellcheck disable=SC2086  # $sources is a list
 if ! "$cc" -std=c11 -g -O1 -D_POSIX_C_SOURCE=200809L -fsanitize=fuzzer,address,undefined \
         -fno-sanitize-recover=undefined -fno-omit-frame-pointer $layers \
-        $(pkg-config --cflags cglm 2>/dev/null) -o "$bin" "$fuzz/fuzz_$target.c" $sources -lm \
+        $(pkg-config --cflags cglm 2>/dev/null) -o "$bin" "$fuzz/fuzz_$target.c" $sources $libs -lm \
         2>"$work/cc.log"; then
     if grep -q "fuzzer" "$work/cc.log" &&
             ! echo "$probe" | "$cc" -x c -fsanitize=fuzzer -o "$work/probe" - 2>/dev/null; then
@@ -48,6 +54,8 @@ if ! "$cc" -std=c11 -g -O1 -D_POSIX_C_SOURCE=200809L -fsanitize=fuzzer,address,u
 fi
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
+# Only Assimp's own leaks are suppressed, each with its reason in the file (none of the course's).
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$fuzz/fuzz.lsan.supp}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 
 # 1. Every saved crash and every seed runs clean.

@@ -9,6 +9,8 @@
 #                              the live GL objects grew), last frame equal to a plain run's
 #   window.resize_cycle.NN     the window under Xvfb resized 200 times (glfwSetWindowSize), last
 #                              frame equal to a headless run's
+#   robust.options             tests/robust/run_options.sh: each chapter's bad option values exit 2
+#                              before a context; --scene/--script found from any folder
 #   robust.inputs              tests/robust/run_robust.sh: render-time model errors (tests/bad/*.scene
 #                              marked "# expect-at: render"), broken and missing shaders, no GL at
 #                              all, outputs kept when a run fails
@@ -63,6 +65,15 @@ if(TARGET 00_forward)
             $<TARGET_FILE:imgdiff>
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(robust.inputs PROPERTIES LABELS robust SKIP_RETURN_CODE 77)
+endif()
+
+# Every bad option value of every chapter exits 2 before any context (run_options.sh says how that is
+# shown); input files found from any folder; the context's own limits in the same words.
+if(TARGET 13_msaa)
+  add_test(NAME robust.options
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/robust/run_options.sh ${CMAKE_BINARY_DIR}/bin ${CMAKE_SOURCE_DIR}
+            $<$<BOOL:${COURSE_SANITIZE}>:sanitized>)
+  set_tests_properties(robust.options PROPERTIES LABELS robust SKIP_RETURN_CODE 77)
 endif()
 
 # The binaries run from any folder, and an installed prefix works after being moved.

@@ -157,7 +157,7 @@ cmp -s "$shot" "$tmp/shot.orig" && ok "the previous screenshot is intact after a
 no_temp_files "failed runs" "$tmp/keep"
 
 run -- "${small[@]}" --screenshot "$tmp/missing-folder/shot.png"
-check "screenshot into a missing folder" 1 \
+check "screenshot into a missing folder" 2 \
     "cannot write $tmp/missing-folder/shot.png: No such file or directory"
 [ ! -e "$tmp/missing-folder" ] && ok "the missing folder was not created" ||
     bad "the missing folder was created"
@@ -165,7 +165,7 @@ check "screenshot into a missing folder" 1 \
 mkdir -p "$tmp/adir.png"
 echo "keep me" >"$tmp/adir.png/inside.txt"
 run -- "${small[@]}" --screenshot "$tmp/adir.png"
-check "screenshot path that is a folder" 1 "cannot write $tmp/adir.png"
+check "screenshot path that is a folder" 2 "cannot write $tmp/adir.png"
 [ "$(cat "$tmp/adir.png/inside.txt")" = "keep me" ] && ok "the folder's content is intact" ||
     bad "the folder changed"
 no_temp_files "rename onto a folder" "$tmp"

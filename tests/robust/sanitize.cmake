@@ -23,9 +23,16 @@ endif()
 # The GL robustness tests run sanitized too: resizes and the error paths (a broken shader, a model
 # Assimp rejects, a failed screenshot) are where memory is most easily lost.
 if(COURSE_SANITIZE)
-  foreach(name robust.gl_error robust.resize_leaks robust.inputs)
+  foreach(name robust.gl_error robust.resize_leaks robust.inputs robust.options)
     if(TEST ${name})
       set_tests_properties(${name} PROPERTIES LABELS "robust;sanitize" ENVIRONMENT "${COURSE_SANITIZE_ENV}")
+    endif()
+  endforeach()
+  # The bad-model corpus under the sanitizers: no report may pass (scene_check exits 2 either way).
+  foreach(name bad.models_course bad.models_assimp)
+    if(TEST ${name})
+      set_tests_properties(${name} PROPERTIES ENVIRONMENT "${COURSE_SANITIZE_ENV}"
+        FAIL_REGULAR_EXPRESSION "ERROR: (Address|Leak)Sanitizer|runtime error:")
     endif()
   endforeach()
 endif()

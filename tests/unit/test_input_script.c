@@ -102,5 +102,47 @@ static void test_feed_reaches_input(void **state)
     input_script_destroy(&s);
 }
 
-UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_parses_and_orders), cmocka_unit_test(test_keys_by_label),
+/* The limit is what the message says: 1,000,000 events load, one more does not. */
+static void test_event_limit_as_stated(void **state)
+{
+    (void)state;
+    input_script s;
+    assert_true(input_script_parse("0-999999 key W\n", "limit", &s));
+    assert_int_equal(s.count, SCRIPT_EVENTS_MAX);
+    assert_int_equal(input_script_last_frame(&s), 999999);
+    input_script_destroy(&s);
+    assert_false(input_script_parse("0-999999 key W\n1000000 quit\n", "limit", &s));
+    assert_null(s.events);
+}
+
+/* A check compares with a mark made before it: an earlier frame, or an earlier line of its frame. */
+static void test_check_needs_a_mark(void **state)
+{
+    (void)state;
+    input_script s;
+    assert_false(input_script_parse("5 objects check\n", "check", &s));
+    assert_false(input_script_parse("4 objects check\n4 objects mark\n", "check", &s));
+    assert_false(input_script_parse("4 objects check\n5 objects mark\n", "check", &s));
+    assert_true(input_script_parse("4 objects mark\n4 objects check\n", "check", &s));
+    input_script_destroy(&s);
+    assert_true(input_script_parse("5 objects check\n4 objects mark\n", "check", &s));
+    input_script_destroy(&s);
+}
+
+/* A range of screenshots shares one copy of its file name; a folder is not a script. */
+static void test_paths_and_files(void **state)
+{
+    (void)state;
+    input_script s;
+    assert_true(input_script_parse("0-2 screenshot shot.png\n", "paths", &s));
+    assert_int_equal(s.count, 3);
+    assert_ptr_equal(s.events[0].path, s.events[2].path);
+    assert_string_equal(s.events[1].path, "shot.png");
+    input_script_destroy(&s);
+    assert_false(input_script_load("/tmp", &s));
+    assert_null(s.events);
+}
+
+UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_event_limit_as_stated), cmocka_unit_test(test_check_needs_a_mark),
+               cmocka_unit_test(test_paths_and_files), cmocka_unit_test(test_parses_and_orders), cmocka_unit_test(test_keys_by_label),
                cmocka_unit_test(test_rejects_bad_lines), cmocka_unit_test(test_feed_reaches_input))

@@ -4,6 +4,7 @@
 
 #include "bench_gbuffer.h"
 #include "bench_renderers.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -62,7 +63,8 @@ void bench_options_print_help(FILE *f)
         "                        assets/scenes)\n"
         "  --out DIR             output folder (default out)\n"
         "  --backend egl|osmesa  headless GL (default egl)\n"
-        "  --no-plots            skip gnuplot\n");
+        "  --no-plots            skip gnuplot\n"
+        "  --quiet               no progress lines (written while a frame takes more than 2 s)\n");
     bench_gbuffer_print_help(f);
     fprintf(f, "  --help                this text\n\n"
                "exit codes: 0 ok, 1 runtime failure, 2 usage error, 77 no GL context\n");
@@ -363,6 +365,10 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
             continue;
         if (strcmp(a, "--no-plots") == 0) {
             o->plots = false;
+            continue;
+        }
+        if (strcmp(a, "--quiet") == 0) {
+            progress_set_quiet(true);
             continue;
         }
         int gbuffer = bench_gbuffer_parse_option(a, v);

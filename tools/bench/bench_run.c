@@ -7,6 +7,7 @@
 #include "gpu_scene.h"
 #include "light.h"
 #include "log.h"
+#include "progress.h"
 #include "scene.h"
 
 #include <math.h>
@@ -168,7 +169,11 @@ static bool time_case(run_ctx *x, gpu_scene *gs, const case_desc *c, case_plan *
     for (int i = 0; i < p->n; i++)
         rounds = p->frames[i] + p->warmup[i] > rounds ? p->frames[i] + p->warmup[i] : rounds;
     bool ok = true;
+    char what[96];
+    snprintf(what, sizeof what, "bench: case %d/%d (%s, %d lights)", x->st->case_index + 1, x->st->case_total,
+             c->scene_name, c->lights);
     for (int k = 0; k < rounds && ok; k++) {
+        progress_frame(what, k, rounds); /* a round: each renderer's frame */
         for (int i = 0; i < p->n && ok; i++) {
             /* Warm-up frames are spread over the first rounds; then timed frames follow. */
             if (k >= p->frames[i] + p->warmup[i])
@@ -187,6 +192,7 @@ static bool time_case(run_ctx *x, gpu_scene *gs, const case_desc *c, case_plan *
             }
         }
     }
+    progress_end();
     return ok;
 }
 

@@ -1,0 +1,56 @@
+/* model_file.h - an untrusted model file brought to Assimp within limits, and Assimp's answer
+ * checked before any post-processing. mesh_data_load is its one caller; the fuzz target
+ * (tests/fuzz/fuzz_model.c) reaches it through mesh_data_load_memory.
+ *
+ *   model_limits_get(lim, why, n)      the limits: the defaults below, each overridable by an
+ *                                      environment variable (COURSE_MODEL_MAX_BYTES, _VERTICES,
+ *                                      _FACES); false with *why when a variable is not a number
+ *   model_format_of(path)              the format the course reads for that file name (by its
+ *                                      extension: obj, ply, off, stl, gltf, glb), or NULL
+ *   model_prescan(data, size, format, lim, why, n)
+ *                                      the counts a header declares (OFF, PLY, OBJ lines, binary
+ *                                      STL) against the limits and against the bytes that follow
+ *                                      them, before Assimp allocates anything from them
+ *   model_import(name, data, size, siblings, lim, post, why, n)
+ *                                      Assimp's import with aiProcess_ValidateDataStructure only,
+ *                                      the counts checked, then the import again with the steps
+ *                                      `post` (validation first); the
+ *                                      file `name` is read from `data`, other files it names (an
+ *                                      OBJ's .mtl, a glTF's .bin) from disk when `siblings`, each
+ *                                      a regular file and all of them within lim->bytes
+ *   model_quote(text, out, n)          a message of Assimp's as one printable line, cut short
+ *
+ * Why these bound memory: Assimp's memory grows with the bytes it reads and with the counts it
+ * reserves from headers. The bytes are limited here; a count is accepted only when the file has
+ * the bytes to hold that many elements, so a 300-byte file cannot make Assimp reserve 8 GB.
+ */
+#ifndef COMMON_MODEL_FILE_H
+#define COMMON_MODEL_FILE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+/* Defaults: fifty times the largest model the course ships (assets/models/teapot.obj, 1.2 MB),
+ * and small enough that what Assimp makes of them stays within a few GB (docs/scene-format.md). */
+#define MODEL_MAX_BYTES_DEFAULT (64LL << 20)
+#define MODEL_MAX_VERTICES_DEFAULT 4000000L
+#define MODEL_MAX_FACES_DEFAULT 4000000L
+#define MODEL_QUOTE_MAX 160 /* characters of an Assimp message kept */
+
+typedef struct model_limits {
+    long long bytes; /* the file, and separately all the files it names */
+    long vertices;   /* declared in a header, and in the imported meshes together */
+    long faces;
+} model_limits;
+
+struct aiScene;
+
+bool model_limits_get(model_limits *lim, char *why, size_t n);
+const char *model_format_of(const char *path);
+bool model_prescan(const char *data, size_t size, const char *format, const model_limits *lim, char *why,
+                   size_t n);
+const struct aiScene *model_import(const char *name, const char *data, size_t size, bool siblings,
+                                   const model_limits *lim, unsigned post, char *why, size_t n);
+void model_quote(const char *text, char *out, size_t n);
+
+#endif
