@@ -52,5 +52,8 @@ bool model_prescan(const char *data, size_t size, const char *format, const mode
 const struct aiScene *model_import(const char *name, const char *data, size_t size, bool siblings,
                                    const model_limits *lim, unsigned post, char *why, size_t n);
 void model_quote(const char *text, char *out, size_t n);
+/* The pre-scan (model_scan.c) and the import (model_file.c) say what is wrong the same way:
+ * printf-style into why[n], then false. */
+bool model_fail(char *why, size_t n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
 #endif
