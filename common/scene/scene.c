@@ -242,6 +242,9 @@ void scene_destroy(scene *s)
     free(s->materials);
     free(s->objects);
     free(s->lights);
+    for (int i = 0; i < s->texture_count; i++)
+        free(s->textures[i].data);
+    free(s->textures);
     memset(s, 0, sizeof *s);
 }
 
@@ -283,6 +286,8 @@ void scene_object_world_at(const scene *s, int index, float time, mat4 out)
     glm_translate_make(out, position);
     glm_rotate_y(out, glm_rad(o->rotate_y_deg), rotated);
     glm_scale_to(rotated, scale, out);
+    if (o->has_base)
+        glm_mat4_mul(out, (vec4 *)o->base, out);
 }
 
 void scene_light_position_at(const scene *s, int index, float time, vec3 out)

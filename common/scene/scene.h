@@ -4,7 +4,7 @@
  *   scene_parse_string(text, name, base_dir, scene)
  *                                      parse text already in memory (tests, fuzzing)
  *   scene_destroy(scene)               free what a successful parse allocated
- *   scene_object_world_at(scene, i, t, out)   world matrix T*Ry*S of object i at time t
+ *   scene_object_world_at(scene, i, t, out)   world matrix T*Ry*S (*base) of object i at time t
  *   scene_light_position_at(scene, i, t, out) position of light i at time t (a spot's too)
  *   scene_add_light(scene, light)      append a light (used by the --lights generator)
  *
@@ -54,7 +54,27 @@ typedef struct scene_mesh {
     int slices, stacks;         /* sphere only; extension "sphere [SLICES STACKS]", default 32 16 */
     char path[SCENE_PATH_MAX];  /* file only: resolved relative to the scene file's folder */
     int line;                   /* line of the declaration, for later error messages */
+    int part;                   /* file only: -1 (default) every mesh of the file merged into one;
+                                   >= 0 the file's mesh of that index alone (directive `model`) */
 } scene_mesh;
+
+/* The texture maps of a metallic-roughness material, in the order of scene_material.maps. */
+typedef enum scene_map {
+    SCENE_MAP_BASE,        /* base colour, sRGB, alpha = opacity */
+    SCENE_MAP_METAL_ROUGH, /* linear: G = roughness, B = metallic (glTF 2.0's packing) */
+    SCENE_MAP_NORMAL,      /* linear: tangent-space normal, 0..1 encoding */
+    SCENE_MAP_OCCLUSION,   /* linear: R = ambient occlusion */
+    SCENE_MAP_EMISSIVE,    /* sRGB */
+    SCENE_MAP_COUNT,
+} scene_map;
+
+/* An image a material samples: a file, or an image embedded in a model file (.glb, data URI). */
+typedef struct scene_texture {
+    char path[SCENE_PATH_MAX]; /* a file: resolved like a mesh file; embedded: "MODEL#N", for messages */
+    unsigned char *data;       /* embedded: the encoded bytes (PNG, JPEG), owned by the scene; else NULL */
+    size_t size;               /* embedded: bytes in data */
+    bool srgb;                 /* colour data (base colour, emissive), decoded from sRGB */
+} scene_texture;
 
 typedef struct scene_material {
     char name[SCENE_NAME_MAX];
@@ -64,6 +84,13 @@ typedef struct scene_material {
     float opacity;   /* default 1 (opaque); 0 < opacity <= 1, below 1 the object is glass: blended
                         over what lies behind it, final = A * shaded + (1 - A) * behind, in linear
                         radiance (docs/scene-format.md, docs/12_transparency.md) */
+    /* Metallic-roughness (`material NAME pbr ...` or a model's material); albedo is the base colour.
+     * Blinn-Phong materials have pbr false and ignore the fields below. */
+    bool pbr;
+    float metallic;  /* 0..1 */
+    float roughness; /* 0..1, perceptual (squared for the distribution) */
+    vec3 emissive;   /* linear radiance added, default 0 */
+    int maps[SCENE_MAP_COUNT]; /* index into scene.textures, -1 for none (the factor alone) */
 } scene_material;
 
 typedef struct scene_object {
@@ -75,6 +102,8 @@ typedef struct scene_object {
     scene_key *keys; /* sorted by time; NULL when static */
     int key_count;
     bool cast_off; /* `cast off`: casts no shadow (chapter 14); default false: it casts */
+    bool has_base; /* a model's node: world = T * Ry * S * base (base: the node's transform in the file) */
+    mat4 base;
 } scene_object;
 
 /* A point light, or (directive `spot`) a spot light: the same light inside a cone. Zero spot fields
@@ -105,6 +134,8 @@ typedef struct scene {
     int object_count;
     scene_light *lights;
     int light_count;
+    scene_texture *textures; /* the images materials sample (scene_material.maps) */
+    int texture_count;
 } scene;
 
 bool scene_load(const char *path, scene *out);

@@ -150,7 +150,8 @@ static bool take_material_attribute(parser *p, scene_material *m, unsigned *seen
 
 static bool parse_material(parser *p)
 {
-    scene_material m = {.specular = 0.0f, .shininess = 32.0f, .opacity = 1.0f};
+    _Static_assert(SCENE_MAP_COUNT == 5, "one -1 per map below");
+    scene_material m = {.specular = 0.0f, .shininess = 32.0f, .opacity = 1.0f, .maps = {-1, -1, -1, -1, -1}};
     if (!scene_parser_take_name(p, "material", m.name))
         return false;
     const name_slot *dup = scene_parser_find_name(&p->material_names, material_list(p), m.name);
@@ -232,7 +233,7 @@ static bool take_mesh_kind(parser *p, scene_mesh *m)
 
 static bool parse_mesh(parser *p)
 {
-    scene_mesh m = {.line = p->line};
+    scene_mesh m = {.line = p->line, .part = -1};
     if (!scene_parser_take_name(p, "mesh", m.name))
         return false;
     const name_slot *dup = scene_parser_find_name(&p->mesh_names, mesh_list(p), m.name);
