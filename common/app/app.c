@@ -14,6 +14,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <errno.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -128,7 +129,10 @@ static void next_choice(const char *const *choices, int *index, const char *what
 static void save_numbered_screenshot(const app *a, const app_window *w)
 {
     char path[64];
-    mkdir("out", 0755);
+    if (mkdir("out", 0755) != 0 && errno != EEXIST) { /* in the current folder, as the page says */
+        log_error("P: cannot make the folder out/ in the current folder: %s", strerror(errno));
+        return;
+    }
     snprintf(path, sizeof path, "out/%s-%ld.png", a->cli->program, a->frame_index);
     app_window_save(w->shown, path);
 }

@@ -109,3 +109,29 @@ bool data_dir_find(const char *given, const char *first, char *out, size_t size,
     memcpy(out, second, (size_t)m + 1);
     return true;
 }
+
+bool data_dir_find_output(const char *given, char *out, size_t size, char *why, size_t why_size)
+{
+    const char *slash = strrchr(given, '/');
+    char dir[4200], tried[9000], where[4200];
+    struct stat st;
+    if (!slash) { /* the current folder */
+        int n = snprintf(out, size, "%s", given);
+        if (n > 0 && (size_t)n < size && !(stat(out, &st) == 0 && S_ISDIR(st.st_mode)))
+            return true;
+        snprintf(why, why_size, "%s", n > 0 && (size_t)n < size ? "it is a folder" : "path too long");
+        return false;
+    }
+    snprintf(dir, sizeof dir, "%.*s", slash == given ? 1 : (int)(slash - given), given);
+    if (!data_dir_find(dir, NULL, where, sizeof where, tried, sizeof tried) || stat(where, &st) != 0 ||
+        !S_ISDIR(st.st_mode)) {
+        snprintf(why, why_size, "No such file or directory (no folder %s: looked for %s)", dir, tried);
+        return false;
+    }
+    int n = snprintf(out, size, "%s%s", where, slash);
+    if (n < 0 || (size_t)n >= size || (stat(out, &st) == 0 && S_ISDIR(st.st_mode))) {
+        snprintf(why, why_size, "%s", n >= 0 && (size_t)n < size ? "it is a folder" : "path too long");
+        return false;
+    }
+    return true;
+}

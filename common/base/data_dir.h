@@ -12,6 +12,11 @@
  *                                        `first` (NULL: the current folder), then in data_dir().
  *                                        False when neither exists (or the path does not fit), with
  *                                        `tried` listing where it looked; *out is then the first place
+ *   data_dir_find_output(given, out, size, why, why_size)
+ *                                        a file to write (a screenshot): its folder found as
+ *                                        data_dir_find finds an input, the file's name kept; false
+ *                                        when there is no such folder or the name is a folder, with
+ *                                        `why` saying so and where it looked
  */
 #ifndef COMMON_DATA_DIR_H
 #define COMMON_DATA_DIR_H
@@ -24,5 +29,6 @@ const char *data_dir(void);
 bool data_dir_path(const char *relative, char *out, size_t size);
 const char *data_dir_origin(void);
 bool data_dir_find(const char *given, const char *first, char *out, size_t size, char *tried, size_t tried_size);
+bool data_dir_find_output(const char *given, char *out, size_t size, char *why, size_t why_size);
 
 #endif

@@ -384,20 +384,9 @@ static int find_input(const char *option, const char *what, const char **path, c
  * written later (atomically, image.c), but a folder that is not there is known now. */
 static int find_output(const char **path, char *found, size_t size)
 {
-    const char *slash = strrchr(*path, '/');
-    char dir[4200], tried[9000], where[4200];
-    struct stat st;
-    if (!slash)
-        return EXIT_CODE_OK; /* the current folder */
-    snprintf(dir, sizeof dir, "%.*s", slash == *path ? 1 : (int)(slash - *path), *path);
-    if (!data_dir_find(dir, NULL, where, sizeof where, tried, sizeof tried) || stat(where, &st) != 0 ||
-        !S_ISDIR(st.st_mode)) {
-        log_error("cannot write %s: No such file or directory (no folder %s: looked for %s)", *path, dir, tried);
-        return EXIT_CODE_USAGE;
-    }
-    int n = snprintf(found, size, "%s%s", where, slash);
-    if (n < 0 || (size_t)n >= size || (stat(found, &st) == 0 && S_ISDIR(st.st_mode))) {
-        log_error("cannot write %s: %s", *path, n >= 0 && (size_t)n < size ? "it is a folder" : "path too long");
+    char why[9200];
+    if (!data_dir_find_output(*path, found, size, why, sizeof why)) {
+        log_error("cannot write %s: %s (--screenshot)", *path, why);
         return EXIT_CODE_USAGE;
     }
     *path = found;

@@ -1,6 +1,9 @@
 /* input_script.c - see input_script.h. */
 #include "input_script.h"
 
+#include "data_dir.h"
+#include "image.h"
+
 #include "input.h"
 #include "keys.h"
 #include "log.h"
@@ -90,7 +93,7 @@ static bool parse_args(parsed *line, char **w, int n, const char **why)
         return n == 1 && parse_number(w[0], -1e3, 1e3, false, &ev->y);
     case SCRIPT_SCREENSHOT:
         *why = "expected a file name ending in .png, .bmp, .tga or .jpg";
-        if (n != 1 || strlen(w[0]) > SCRIPT_PATH_MAX)
+        if (n != 1 || strlen(w[0]) > SCRIPT_PATH_MAX || image_format_of(w[0]) == IMAGE_UNKNOWN)
             return false;
         strcpy(line->path, w[0]);
         return true;
@@ -136,8 +139,13 @@ static bool parse_line(char *line, const char *name, int number, parsed *out)
 static bool append(input_script *s, parsed *p, int *cap)
 {
     if (p->ev.kind == SCRIPT_SCREENSHOT) { /* one copy of the file name for the whole range */
+        char found[4400], why[9200];
+        if (!data_dir_find_output(p->path, found, sizeof found, why, sizeof why)) {
+            log_error("%s:%d: screenshot: cannot write %s: %s", s->name, p->ev.line, p->path, why);
+            return false;
+        }
         char **grown = realloc(s->paths, (size_t)(s->path_count + 1) * sizeof *grown);
-        char *copy = grown ? strdup(p->path) : NULL;
+        char *copy = grown ? strdup(found) : NULL;
         if (grown)
             s->paths = grown;
         if (!copy) {

@@ -19,7 +19,8 @@
  *   move X Y     the cursor to framebuffer pixel (X, Y), from the top-left corner
  *   press B | release B               mouse button B: left or right
  *   scroll DY    wheel steps (positive: zoom in)
- *   screenshot PATH                   after the frame: what the window shows (overlay included)
+ *   screenshot PATH                   after the frame: what the window shows (overlay included);
+ *                                     PATH's folder found at load, current folder then data folder
  *   overlay      after the frame: print the overlay's text to stdout, each line "overlay: ..."
  *   objects mark | objects check      after the frame: remember the number of live GL objects /
  *                                     fail the run unless it is the remembered number (leaks)

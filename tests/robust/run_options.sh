@@ -35,6 +35,8 @@ expect() {
 
 mkdir "$tmp/folder"
 printf '0 key M\n5 objects check\n' >"$tmp/nomark.script"
+printf '0 key M\n1 screenshot nowhere/x.png\n' >"$tmp/noshotdir.script"
+printf '0 screenshot x.gif\n' >"$tmp/gif.script"
 chapters=$(cd "$bin_dir" && ls [0-1][0-9]_* 2>/dev/null)
 [ -n "$chapters" ] || { echo "FAIL no chapter binaries in $bin_dir"; exit 1; }
 for ch in $chapters; do
@@ -46,7 +48,10 @@ for ch in $chapters; do
     expect 2 "(looked for $tmp/gone.scene and " "$ch" --scene gone.scene
     expect 2 "cannot write nowhere/x.png: No such file or directory (no folder nowhere: looked for $tmp/nowhere and " \
         "$ch" --screenshot nowhere/x.png
+    expect 2 "noshotdir.script:2: screenshot: cannot write nowhere/x.png: No such file or directory (no folder nowhere: looked for $tmp/nowhere and " \
+        "$ch" --script noshotdir.script
 done
+expect 2 "gif.script:1: screenshot: expected a file name ending in .png" 00_forward --script gif.script
 # Each chapter's own options.
 expect 2 "bad --radius '0': expected a number from 1e-06 to 1000000" 04_light_volumes --radius 0
 expect 2 "bad --radius 'big'" 04_light_volumes --radius big
@@ -90,6 +95,14 @@ fi
 rc=$?
 if [ "$rc" -eq 0 ] && [ -s "$tmp/city.png" ]; then pass=$((pass + 1)); echo "ok   cd bin && 08 --scene assets/scenes/city.scene"
 else fail=$((fail + 1)); echo "FAIL cd bin && 08 --scene assets/scenes/city.scene: exit $rc: $(head -2 "$tmp/err")"; fi
+# A script's screenshot in a folder of the current folder (where the run is, not beside the binary).
+mkdir -p "$tmp/cwd/shots"
+printf '0 screenshot shots/a.png\n' >"$tmp/cwd/shot.script"
+(cd "$tmp/cwd" && env -u DISPLAY "$bin_dir/00_forward" --headless --size 32x24 --script shot.script) \
+    >"$tmp/out" 2>"$tmp/err"
+rc=$?
+if [ "$rc" -eq 0 ] && [ -s "$tmp/cwd/shots/a.png" ]; then pass=$((pass + 1)); echo "ok   a script's screenshot shots/a.png lands in the current folder"
+else fail=$((fail + 1)); echo "FAIL script screenshot shots/a.png: exit $rc: $(head -2 "$tmp/err")"; fi
 max=$(sed -n 's/.*max_samples=\([0-9]*\).*/\1/p' "$tmp/info")
 over=$((max * 2))
 if [ -n "$max" ] && [ "$over" -le 32 ]; then
