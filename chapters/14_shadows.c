@@ -60,6 +60,8 @@ static const cli_desc cli = {
             {"shadows", "N", "shadow only the N most important lights (default: all)", NULL, NULL, CLI_WHOLE, 0, 1 << 20},
             {"shadow-cull", "ON", "draw only the casters that meet the light's sphere and the tile's frustum",
              switches, "on"},
+            {"view-light", "K", "--view visibility counts light K alone (default: every light)", NULL, NULL, CLI_WHOLE,
+             0, 1 << 20},
             {"time-step", "SECONDS", "the scene's time advances this much each frame, headless too (default 0)", NULL,
              "0", CLI_REAL, 0, 1e3},
         },
@@ -76,6 +78,7 @@ static struct {
     GLuint visibility_program; /* --view visibility */
     shadow_views views;        /* --view atlas, --view importance */
     double time_step;
+    int view_light; /* --view-light, -1: every light */
 } state;
 
 /* The atlas's options, checked against the context's largest texture. */
@@ -91,6 +94,12 @@ static bool read_options(app *a, shadow_plan_desc *desc, GLenum *format, float *
         (app_extra(a, "shadows") && !app_extra_number(a, "shadows", 0, 1 << 20, &shadows)) ||
         !app_extra_number(a, "time-step", 0, 1e3, &state.time_step))
         return false;
+    state.view_light = app_extra(a, "view-light") ? atoi(app_extra(a, "view-light")) : -1;
+    if (state.view_light >= a->scene.light_count) {
+        log_error("bad --view-light '%d': the scene has %d lights (0 to %d)", state.view_light, a->scene.light_count,
+                  a->scene.light_count - 1);
+        return !(a->input_error = true);
+    }
     *desc = (shadow_plan_desc){.atlas_size = (int)size, .max_shadowed = (int)shadows, .pcf = atoi(app_extra(a, "pcf")),
                                .normal_offset = (float)offset, .cull = strcmp(app_extra(a, "shadow-cull"), "on") == 0};
     *format = strcmp(app_extra(a, "shadow-format"), "d16") == 0 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT32F;
@@ -129,6 +138,7 @@ static bool draw_visibility(app *a)
     gpu_scene_bind_lights(&a->gs, state.visibility_program, SHADER_UNIT_LIGHTS);
     gbuffer_bind_textures(&state.g, &a->gs, state.visibility_program, SHADER_UNIT_GBUFFER);
     shadow_atlas_bind(state.visibility_program, &state.atlas);
+    glUniform1i(glGetUniformLocation(state.visibility_program, "u_view_light"), state.view_light);
     gl_draw_fullscreen();
     return gl_check("14 visibility");
 }

@@ -24,7 +24,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#define CLI_MAX_EXTRAS 8
+#define CLI_MAX_EXTRAS 10
 #define CLI_MAX_SIZE 65536
 #define CLI_DEFAULT_SCENE "assets/scenes/default.scene" /* relative to the data folder */ /* a sanity bound; the GL limit is checked once a context exists */
 

@@ -69,6 +69,7 @@ expect 2 "bad --normal-offset '9': expected a number from 0 to 8" 14_shadows --n
 expect 2 "bad --slope-bias 'x'" 14_shadows --slope-bias x
 expect 2 "bad --shadows '2.5': expected a whole number" 14_shadows --shadows 2.5
 expect 2 "bad --time-step '-1'" 14_shadows --time-step -1
+expect 2 "bad --view-light '2.5': expected a whole number" 14_shadows --view-light 2.5
 expect 2 "bad --ao-radius '0': expected a number from 0.001 to 1000" 17_ssao --ao-radius 0
 expect 2 "bad --ao-samples '65': expected a whole number from 1 to 64" 17_ssao --ao-samples 65
 expect 2 "bad --ao-blur '17'" 17_ssao --ao-blur 17
@@ -103,6 +104,11 @@ printf '0 screenshot shots/a.png\n' >"$tmp/cwd/shot.script"
 rc=$?
 if [ "$rc" -eq 0 ] && [ -s "$tmp/cwd/shots/a.png" ]; then pass=$((pass + 1)); echo "ok   a script's screenshot shots/a.png lands in the current folder"
 else fail=$((fail + 1)); echo "FAIL script screenshot shots/a.png: exit $rc: $(head -2 "$tmp/err")"; fi
+env -u DISPLAY "$bin_dir/14_shadows" --headless --size 32x24 --view-light 8 >"$tmp/out" 2>"$tmp/err"
+rc=$?
+if [ "$rc" -eq 2 ] && grep -qF "bad --view-light '8': the scene has 8 lights (0 to 7)" "$tmp/err"; then
+    pass=$((pass + 1)); echo "ok   14_shadows --view-light 8 on the default scene's 8 lights -> 2"
+else fail=$((fail + 1)); echo "FAIL 14_shadows --view-light 8: exit $rc: $(head -2 "$tmp/err")"; fi
 max=$(sed -n 's/.*max_samples=\([0-9]*\).*/\1/p' "$tmp/info")
 over=$((max * 2))
 if [ -n "$max" ] && [ "$over" -le 32 ]; then

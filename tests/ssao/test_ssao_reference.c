@@ -23,10 +23,9 @@
 #include "chapters.h"
 #include "hard_util.h"
 #include "mat4d.h"
-#include "mesh_data.h"
+#include "ray_scene.h"
 #include "rng.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,107 +34,13 @@
 #define H 120
 #define G 64 /* G x G rays per pixel */
 
-typedef struct tri_object {
-    double *v; /* 9 doubles per triangle: world space */
-    int count;
-    double lo[3], hi[3];
-} tri_object;
-
-static tri_object *objects;
-static int object_count;
+static ray_scene rays;
 static double reference[W * H]; /* -1: no surface */
 static double distance[W * H];  /* from the eye to the surface, for the hard cases */
 static bool near_thin[W * H];
 
 enum { CASE_SILHOUETTE, CASE_BORDER, CASE_THIN, CASE_FAR, CASE_OPEN, CASE_COUNT };
 static const char *const case_names[CASE_COUNT] = {"silhouette", "border", "thin", "far", "open"};
-
-/* Every object's triangles in world space (double), with its box. */
-static bool build_triangles(const scene *s)
-{
-    objects = calloc((size_t)s->object_count, sizeof *objects);
-    object_count = s->object_count;
-    for (int o = 0; o < s->object_count; o++) {
-        mesh_data md;
-        if (!objects || !mesh_data_from_scene(&md, s, &s->meshes[s->objects[o].mesh]))
-            return false;
-        mat4 world;
-        scene_object_world_at(s, o, 0.0f, world);
-        tri_object *t = &objects[o];
-        t->count = md.index_count / 3;
-        t->v = malloc((size_t)md.index_count * 3 * sizeof(double));
-        for (int k = 0; k < 3; k++)
-            t->lo[k] = DBL_MAX, t->hi[k] = -DBL_MAX;
-        for (int i = 0; t->v && i < md.index_count; i++) {
-            const float *p = &md.vertices[MESH_VERTEX_FLOATS * md.indices[i]];
-            for (int r = 0; r < 3; r++) {
-                double x = world[3][r];
-                for (int c = 0; c < 3; c++)
-                    x += (double)world[c][r] * p[c];
-                t->v[3 * i + r] = x;
-                t->lo[r] = fmin(t->lo[r], x), t->hi[r] = fmax(t->hi[r], x);
-            }
-        }
-        mesh_data_destroy(&md);
-        if (!t->v)
-            return false;
-    }
-    return true;
-}
-
-/* Whether the segment o + t d, t in [0, tmax], meets the box (slabs). */
-static bool ray_box(const double o[3], const double d[3], double tmax, const double lo[3], const double hi[3])
-{
-    double t0 = 0.0, t1 = tmax;
-    for (int k = 0; k < 3; k++) {
-        double inv = 1.0 / d[k], a = (lo[k] - o[k]) * inv, b = (hi[k] - o[k]) * inv;
-        t0 = fmax(t0, fmin(a, b)), t1 = fmin(t1, fmax(a, b));
-        if (t0 > t1 + 1e-12)
-            return false;
-    }
-    return true;
-}
-
-/* Moller-Trumbore in double: the distance along d to triangle v (both sides), or -1. */
-static double ray_triangle(const double o[3], const double d[3], const double *v)
-{
-    double e1[3], e2[3], p[3], q[3], s[3];
-    for (int k = 0; k < 3; k++)
-        e1[k] = v[3 + k] - v[k], e2[k] = v[6 + k] - v[k], s[k] = o[k] - v[k];
-    p[0] = d[1] * e2[2] - d[2] * e2[1], p[1] = d[2] * e2[0] - d[0] * e2[2], p[2] = d[0] * e2[1] - d[1] * e2[0];
-    double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
-    if (fabs(det) < 1e-300)
-        return -1.0;
-    double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) / det;
-    if (u < 0.0 || u > 1.0)
-        return -1.0;
-    q[0] = s[1] * e1[2] - s[2] * e1[1], q[1] = s[2] * e1[0] - s[0] * e1[2], q[2] = s[0] * e1[1] - s[1] * e1[0];
-    double w = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
-    if (w < 0.0 || u + w > 1.0)
-        return -1.0;
-    return (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
-}
-
-/* The nearest hit along o + t d with t in (tmin, tmax): its t and triangle (*tri), or -1; any_hit
- * stops at the first. */
-static double trace(const double o[3], const double d[3], double tmin, double tmax, bool any_hit, const double **tri)
-{
-    double best = -1.0;
-    for (int b = 0; b < object_count; b++) {
-        const tri_object *t = &objects[b];
-        if (!ray_box(o, d, tmax, t->lo, t->hi))
-            continue;
-        for (int i = 0; i < t->count; i++) {
-            double h = ray_triangle(o, d, &t->v[9 * i]);
-            if (h > tmin && h < tmax && (best < 0.0 || h < best)) {
-                best = h, *tri = &t->v[9 * i];
-                if (any_hit)
-                    return best;
-            }
-        }
-    }
-    return best;
-}
 
 static void normalize3(double v[3])
 {
@@ -163,7 +68,7 @@ static double open_share(const double p[3], const double n[3], double radius, rn
             const double *tri;
             for (int k = 0; k < 3; k++)
                 d[k] = s * cos(phi) * t[k] + s * sin(phi) * b[k] + sqrt(1.0 - u) * n[k];
-            open += trace(o, d, 0.0, radius, true, &tri) < 0.0;
+            open += ray_scene_trace(&rays, o, d, 0.0, radius, RAY_ANY, &tri) < 0.0;
         }
     return (double)open / (G * G);
 }
@@ -178,7 +83,7 @@ static bool surface_at(const double inv_view_proj[16], const double eye[3], int 
     for (int k = 0; k < 3; k++)
         d[k] = far_point[k] / far_point[3] - eye[k];
     const double *v;
-    double t = trace(eye, d, 1e-9, 1.0, false, &v);
+    double t = ray_scene_trace(&rays, eye, d, 1e-9, 1.0, RAY_NEAREST, &v);
     if (t <= 0.0)
         return false;
     double e1[3], e2[3];
@@ -196,8 +101,8 @@ static bool surface_at(const double inv_view_proj[16], const double eye[3], int 
  * extents (the thin case). */
 static bool near_thin_object(const double p[3], double radius)
 {
-    for (int b = 0; b < object_count; b++) {
-        const tri_object *t = &objects[b];
+    for (int b = 0; b < rays.object_count; b++) {
+        const ray_object *t = &rays.objects[b];
         double e[3], outside = 0.0;
         for (int k = 0; k < 3; k++) {
             e[k] = t->hi[k] - t->lo[k];
@@ -310,7 +215,7 @@ int main(int argc, char **argv)
     double noise_mean = 0.0, noise = -1.0;
     bool ok = hard_expect(scene_load(argv[1], &s) && gpu_scene_create(&s, &gs), "load %s", argv[1]) &&
               hard_expect(gpu_scene_update(&gs, 0.0f, 5.0 / 256.0, W, H), "the view at %dx%d", W, H) &&
-              hard_expect(build_triangles(&s), "the scene's triangles in double");
+              hard_expect(ray_scene_build(&rays, &s, 0.0f), "the scene's triangles in double");
     if (ok)
         noise = build_reference(&gs, atof(argv[2]), &noise_mean);
     ok = ok && hard_expect(noise >= 0.0 && noise_mean < 1.0 / 255.0,
