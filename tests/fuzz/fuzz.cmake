@@ -32,7 +32,8 @@ if(COURSE_FUZZ)
   # The parser is compiled into the target (not linked from common_core) so that it carries
   # libFuzzer's coverage instrumentation too.
   set(COURSE_FUZZ_SOURCES_scene ${CMAKE_SOURCE_DIR}/common/scene/scene.c ${CMAKE_SOURCE_DIR}/common/scene/scene_parser.c
-    ${CMAKE_SOURCE_DIR}/common/scene/scene_directives.c ${CMAKE_SOURCE_DIR}/common/scene/scene_lights.c
+    ${CMAKE_SOURCE_DIR}/common/scene/scene_directives.c ${CMAKE_SOURCE_DIR}/common/scene/scene_materials.c
+    ${CMAKE_SOURCE_DIR}/common/scene/scene_lights.c
     ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)
   set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/platform/cli.c ${CMAKE_SOURCE_DIR}/common/platform/cli_help.c ${CMAKE_SOURCE_DIR}/common/platform/input_script.c
     ${CMAKE_SOURCE_DIR}/common/platform/input.c ${CMAKE_SOURCE_DIR}/common/base/gbuffer_layout_names.c
