@@ -40,7 +40,7 @@ if(COURSE_FUZZ)
     ${CMAKE_SOURCE_DIR}/common/platform/keys.c ${CMAKE_SOURCE_DIR}/common/base/progress.c
     ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)
   set(COURSE_FUZZ_SOURCES_script ${COURSE_FUZZ_SOURCES_cli})
-  set(COURSE_FUZZ_SOURCES_model ${CMAKE_SOURCE_DIR}/common/scene/mesh_data.c
+  set(COURSE_FUZZ_SOURCES_model ${CMAKE_SOURCE_DIR}/common/scene/mesh_data.c ${CMAKE_SOURCE_DIR}/common/scene/mesh_tangents.c
     ${CMAKE_SOURCE_DIR}/common/scene/model_file.c ${CMAKE_SOURCE_DIR}/common/scene/model_scan.c
     ${COURSE_FUZZ_SOURCES_scene})
   foreach(target ${COURSE_FUZZ_TARGETS})

@@ -20,7 +20,7 @@ case $target in
     scene) sources="$src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_materials.c $src/common/scene/scene_lights.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
     cli) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/platform/cli_help.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c $src/common/base/data_dir.c $src/common/base/progress.c" ;;
     script) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/platform/cli_help.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c $src/common/base/data_dir.c $src/common/base/progress.c" ;;
-    model) sources="$src/common/scene/mesh_data.c $src/common/scene/model_file.c $src/common/scene/model_scan.c $src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_materials.c $src/common/scene/scene_lights.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
+    model) sources="$src/common/scene/mesh_data.c $src/common/scene/mesh_tangents.c $src/common/scene/model_file.c $src/common/scene/model_scan.c $src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_materials.c $src/common/scene/scene_lights.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
     *) echo "unknown fuzz target '$target'" >&2; exit 2 ;;
 esac
 
