@@ -5,6 +5,7 @@
  */
 #include "scene_internal.h"
 
+#include <stb_image.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -66,6 +67,12 @@ static bool take_map(parser *p, scene_material *m, int map)
     char path[SCENE_PATH_MAX];
     if (!scene_parser_resolve_file(p, "image", p->tok[p->pos++], path))
         return false;
+    /* The header only (its size and kind): a file that is no image stb_image reads fails here, on its
+     * line, not when the renderer decodes it. */
+    int w = 0, h = 0, channels = 0;
+    if (!stbi_info(path, &w, &h, &channels))
+        return scene_parser_fail(p, "%s: '%s' is not an image the course reads (PNG, JPEG, TGA, BMP): %s", what,
+                                 path, stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
     m->maps[map] = add_texture(p, path, map_is_srgb(map));
     return m->maps[map] >= 0;
 }

@@ -22,13 +22,22 @@ static int setup_dir(void **state)
     (void)state;
     if (tmp_dir_create("/tmp/test_scene_pbr_XXXXXX") != 0)
         return -1;
-    /* The parser only checks that an image is there and readable: any bytes will do. */
+    /* The parser reads an image's header: a 1 x 1 PNG will do; not_image.png is text. */
+    static const unsigned char png[] = {
+        0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00,
+        0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x02, 0x00, 0x00, 0x00, 0x90, 0x77, 0x53, 0xde, 0x00,
+        0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0xf8, 0xcf, 0xc0, 0x00, 0x00, 0x03, 0x01,
+        0x01, 0x00, 0xc9, 0xfe, 0x92, 0xef, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60,
+        0x82};
     static const char *const images[] = {"base.png", "mr.png", "n.png", "ao.png", "e.png"};
     for (size_t i = 0; i < sizeof images / sizeof images[0]; i++) {
         FILE *f = fopen(tmp_path(images[i]), "wb");
-        if (!f || fputs("png", f) < 0 || fclose(f) != 0)
+        if (!f || fwrite(png, 1, sizeof png, f) != sizeof png || fclose(f) != 0)
             return -1;
     }
+    FILE *f = fopen(tmp_path("not_image.png"), "wb");
+    if (!f || fputs("this is text", f) < 0 || fclose(f) != 0)
+        return -1;
     return 0;
 }
 
@@ -146,6 +155,8 @@ static void test_errors(void **state)
         {"\nmaterial m pbr base 1 1 1 metallic 0 roughness 1 normal_map nothere.png\n",
          "t.scene:2: cannot open image '"},
         {"material m pbr base 1 1 1 metallic 0 roughness 1 normal_map .\n", "not a regular file"},
+        {"\n\nmaterial m pbr base 1 1 1 metallic 0 roughness 1 base_map not_image.png\n",
+         "t.scene:3: material base_map: '"},
         {"material m pbr base 1 1 1 metallic 0 roughness 1 0.5\n",
          "t.scene:1: material: unexpected extra token '0.5'"},
     };
