@@ -47,7 +47,7 @@ if(COURSE_FUZZ)
     add_executable(fuzz_${target} ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c
                    ${COURSE_FUZZ_SOURCES_${target}})
     target_include_directories(fuzz_${target} PRIVATE ${COMMON_INCLUDE_DIRS})
-    target_link_libraries(fuzz_${target} PRIVATE PkgConfig::CGLM PkgConfig::ASSIMP Threads::Threads m)
+    target_link_libraries(fuzz_${target} PRIVATE PkgConfig::CGLM PkgConfig::ASSIMP PkgConfig::STB Threads::Threads m)
     target_compile_options(fuzz_${target} PRIVATE -fsanitize=fuzzer,address,undefined
                            -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
     target_link_options(fuzz_${target} PRIVATE -fsanitize=fuzzer,address,undefined)

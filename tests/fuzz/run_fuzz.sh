@@ -26,6 +26,9 @@ esac
 
 libs="-pthread"
 [ "$target" = model ] && libs="$libs $(pkg-config --libs assimp)"
+# The scene parser reads an image's header with stb_image (common/scene/scene_materials.c).
+stb=""
+case $target in scene|model) stb=$(pkg-config --cflags stb); libs="$libs $(pkg-config --libs stb)" ;; esac
 cc=${FUZZ_CC:-clang}
 if ! command -v "$cc" >/dev/null 2>&1; then
     echo "skip: $cc not found (the fuzz targets need clang's libFuzzer)"
@@ -41,7 +44,7 @@ probe='int LLVMFuzzerTestOneInput(const char *d, long n) { (void)d; return (int)
 # shellcheck disable=SC2086  # $sources is a list
 if ! "$cc" -std=c11 -g -O1 -D_POSIX_C_SOURCE=200809L -fsanitize=fuzzer,address,undefined \
         -fno-sanitize-recover=undefined -fno-omit-frame-pointer $layers \
-        $(pkg-config --cflags cglm 2>/dev/null) -o "$bin" "$fuzz/fuzz_$target.c" $sources $libs -lm \
+        $(pkg-config --cflags cglm 2>/dev/null) $stb -o "$bin" "$fuzz/fuzz_$target.c" $sources $libs -lm \
         2>"$work/cc.log"; then
     if grep -q "fuzzer" "$work/cc.log" &&
             ! echo "$probe" | "$cc" -x c -fsanitize=fuzzer -o "$work/probe" - 2>/dev/null; then
