@@ -220,6 +220,24 @@ static void cleanup(app *a)
     gl_program_destroy(&state.thin_program);
 }
 
-const app_desc chapter_15 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+/* The light buffer sums each light's terms before any material meets them: one highlight exponent per
+ * pixel. A metallic-roughness highlight needs the material's Fresnel and roughness inside every light's
+ * term, which a pre-pass cannot factor out (docs/18_pbr_materials.md): such a scene is refused. */
+static bool accepts_scene(const app *a)
+{
+    if (!app_renderer_is(a, "deferred"))
+        return true;
+    for (int m = 0; m < a->gs.src->material_count; m++)
+        if (a->gs.src->materials[m].pbr) {
+            log_error("%s: material '%s' is metallic-roughness; a light pre-pass sums Blinn-Phong terms only: "
+                      "use --renderer forward, or chapter 18",
+                      a->gs.src->path, a->gs.src->materials[m].name);
+            return false;
+        }
+    return true;
+}
+
+const app_desc chapter_15 = {.cli = &cli, .accepts_scene = accepts_scene, .init = init, .resize = resize,
+                             .frame = frame, .cleanup = cleanup, .key = key};
 
 CHAPTER_MAIN(chapter_15)

@@ -71,6 +71,16 @@ static bool accepts_scene(const app *a)
                   gs->src->object_count, VIS_MAX_OBJECTS, 32 - SHADER_VIS_TRIANGLE_BITS);
         return false;
     }
+    /* Its shading pass rebuilds each pixel's position and normal from the raw vertices, but not yet the
+     * texture coordinates and tangents a material's images need (chapter 18). */
+    for (int m = 0; m < gs->src->material_count; m++)
+        for (int k = 0; k < SCENE_MAP_COUNT; k++)
+            if (gs->src->materials[m].pbr && gs->src->materials[m].maps[k] >= 0) {
+                log_error("%s: material '%s' has images; the visibility buffer's shading pass reads none (its "
+                          "factors alone would be drawn): use --renderer forward, or chapter 18",
+                          gs->src->path, gs->src->materials[m].name);
+                return false;
+            }
     for (int m = 0; m < gs->src->mesh_count; m++)
         if (gs->meshes[m].index_count / 3 > VIS_MAX_TRIANGLES) {
             log_error("%s: mesh '%s' has %d triangles; the visibility buffer's ids hold at most %ld a mesh "

@@ -55,16 +55,22 @@ int cluster_loop_count(ivec2 range)
     return range.y < 0 ? u_light_count : range.y;
 }
 
-// Ambient, then every light of the cluster's list through the one shading function.
-vec3 cluster_shade(ivec2 range, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess)
+// Ambient (times the surface's occlusion, 1 but for an occlusion map), then every light of the
+// cluster's list through the one shading function.
+vec3 cluster_shade(ivec2 range, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess, float occlusion)
 {
-    vec3 c = shade_ambient(albedo);
+    vec3 c = shade_ambient(albedo * occlusion);
     int count = cluster_loop_count(range);
     for (int k = 0; k < count; k++) {
         int i = range.y < 0 ? k : texelFetch(u_cluster_lights, range.x + k).r;
         c += shade_light_index(i, p, n, v, albedo, specular, shininess);
     }
     return c;
+}
+
+vec3 cluster_shade(ivec2 range, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess)
+{
+    return cluster_shade(range, p, n, v, albedo, specular, shininess, 1.0);
 }
 
 // The clusters view: the cluster's list length as the heat map; odd slices darker so that the slice

@@ -4,6 +4,7 @@
 // material's opacity A in alpha, for blending A * shaded + (1 - A) * behind over linear radiance;
 // a back face (an object's far side, seen through its near side) is shaded as the side facing the eye.
 #include "shading.glsl"
+#include "material_maps.glsl"
 
 in vec3 v_world;
 in vec3 v_normal;
@@ -35,12 +36,15 @@ void main()
     }
 #endif
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
+    vec3 albedo = v_albedo;
+    float specular = v_specular, shininess = v_shininess, occlusion;
+    material_apply_maps(albedo, specular, shininess, n, occlusion);
 #ifdef TRANSPARENT
     if (!gl_FrontFacing)
         n = -n;
 #endif
     vec3 v = safe_normalize(u_eye - v_world, n);
-    vec3 c = shade_ambient(v_albedo);
+    vec3 c = shade_ambient(albedo * occlusion);
     int first = 0, count = u_light_count;
     if (u_use_list) {
         first = texelFetch(u_light_list, 2 * v_object).r;
@@ -48,7 +52,7 @@ void main()
     }
     for (int k = 0; k < count; k++) {
         int i = u_use_list ? texelFetch(u_light_list, first + k).r : k;
-        c += shade_light_index(i, v_world, n, v, v_albedo, v_specular, v_shininess);
+        c += shade_light_index(i, v_world, n, v, albedo, specular, shininess);
     }
 #if defined(TRANSPARENT)
     // Specular included: the whole shaded colour is weighted by A when blended.

@@ -9,6 +9,8 @@
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;      // chapter 18: the texture coordinate
+layout(location = 3) in vec4 a_tangent; // xyz, and w the handedness (common/scene/mesh_data.h)
 
 uniform samplerBuffer u_objects;
 uniform int u_first_object;
@@ -20,6 +22,10 @@ flat out int v_object;
 flat out vec3 v_albedo;
 flat out float v_specular;
 flat out float v_shininess;
+out vec2 v_uv;
+out vec4 v_tangent;      // world space, w the handedness
+flat out vec4 v_maps;    // the material's map layers (shaders/material_maps.glsl)
+flat out vec4 v_emissive;
 invariant gl_Position;
 
 void main()
@@ -40,5 +46,9 @@ void main()
     v_albedo = material.rgb;
     v_specular = material.a;
     v_shininess = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_SHININESS).r;
+    v_uv = a_uv;
+    v_tangent = vec4(mat3(model) * a_tangent.xyz, a_tangent.w);
+    v_maps = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MAPS);
+    v_emissive = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_EMISSIVE);
     gl_Position = u_view_proj * world;
 }

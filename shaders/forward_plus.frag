@@ -8,6 +8,7 @@
 #include "shading.glsl"
 #include "heat.glsl"
 #include "clusters.glsl"
+#include "material_maps.glsl"
 
 in vec3 v_world;
 in vec3 v_normal;
@@ -32,11 +33,14 @@ void main()
         return;
     }
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
+    vec3 albedo = v_albedo;
+    float specular = v_specular, shininess = v_shininess, occlusion;
+    material_apply_maps(albedo, specular, shininess, n, occlusion);
     if (!gl_FrontFacing)
         n = -n;
     vec3 v = safe_normalize(u_eye - v_world, n);
     ivec2 range = cluster_range(cluster_index(gl_FragCoord.xy, cluster_view_depth(v_world)));
-    vec3 c = cluster_shade(range, v_world, n, v, v_albedo, v_specular, v_shininess);
+    vec3 c = cluster_shade(range, v_world, n, v, albedo, specular, shininess, occlusion);
     o_color = vec4(c, texelFetch(u_objects, SHADER_OBJECT_TEXELS * v_object + SHADER_OBJECT_TEXEL_OPACITY).y);
 }
 #else
@@ -47,8 +51,11 @@ void main()
     vec3 c = vec3(0.0);
     if (u_view_mode == SHADER_VIEW_LIT) {
         vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
+        vec3 albedo = v_albedo;
+        float specular = v_specular, shininess = v_shininess, occlusion;
+        material_apply_maps(albedo, specular, shininess, n, occlusion);
         vec3 v = safe_normalize(u_eye - v_world, n);
-        c = cluster_shade(range, v_world, n, v, v_albedo, v_specular, v_shininess);
+        c = cluster_shade(range, v_world, n, v, albedo, specular, shininess, occlusion);
     }
     o_color = cluster_output(u_view_mode, u_output_linear, range, depth, c);
 }

@@ -7,6 +7,7 @@
 #include "shading.glsl"
 #include "octahedral.glsl"
 #include "gbuffer_encode.glsl"
+#include "material_maps.glsl"
 
 #ifndef GBUFFER_NORMAL
 #define GBUFFER_NORMAL SHADER_GBUFFER_NORMAL_HALF
@@ -25,20 +26,26 @@ void main()
 {
     // Same fallback as forward.frag, so a degenerate normal shades the same in both renderers.
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
+    // A metallic-roughness material's images (chapter 18): forward.frag applies the same.
+    vec3 albedo = v_albedo;
+    float specular = v_specular, shininess = v_shininess, occlusion;
+    material_apply_maps(albedo, specular, shininess, n, occlusion);
 #if defined(GBUFFER_EXACT)
     o_albedo = vec4(v_world, 1.0);
     o_normal_material = vec4(n, 1.0);
 #elif GBUFFER_NORMAL == SHADER_GBUFFER_NORMAL_HALF
-    o_albedo = vec4(v_albedo, 1.0); // linear; GL_FRAMEBUFFER_SRGB encodes it on write (a unused)
-    o_normal_material = vec4(octahedral_encode_half(n), v_specular, v_shininess);
+    // linear; GL_FRAMEBUFFER_SRGB encodes it on write. a: the occlusion (1 but for an occlusion map),
+    // never sRGB-encoded. A metallic-roughness material's metallic and -1 - roughness ride in z and w.
+    o_albedo = vec4(albedo, occlusion);
+    o_normal_material = vec4(octahedral_encode_half(n), specular, shininess);
 #else
-    o_albedo = vec4(v_albedo, v_specular); // alpha is never sRGB-encoded: specular stays linear
+    o_albedo = vec4(albedo, specular); // alpha is never sRGB-encoded: specular stays linear
 #if GBUFFER_NORMAL == SHADER_GBUFFER_NORMAL_BYTES
-    o_normal_material = vec4(octahedral_encode_codes(n, 127.0) / 255.0, 0.0, shininess_store(v_shininess));
+    o_normal_material = vec4(octahedral_encode_codes(n, 127.0) / 255.0, 0.0, shininess_store(shininess));
 #elif GBUFFER_NORMAL == SHADER_GBUFFER_NORMAL_PACKED
-    o_normal_material = vec4(pack_12_12(octahedral_encode_codes(n, 2047.0)), shininess_store(v_shininess));
+    o_normal_material = vec4(pack_12_12(octahedral_encode_codes(n, 2047.0)), shininess_store(shininess));
 #else // SHADER_GBUFFER_NORMAL_SHORTS
-    o_normal_material = vec4(octahedral_encode_codes(n, 32767.0) / 65535.0, 0.0, shininess_store(v_shininess));
+    o_normal_material = vec4(octahedral_encode_codes(n, 32767.0) / 65535.0, 0.0, shininess_store(shininess));
 #endif
 #endif
 }

@@ -26,6 +26,7 @@ struct surface {
     vec3 albedo;   // linear
     float specular;
     float shininess;
+    float occlusion; // of the ambient light: an occlusion map's (chapter 18), else 1
     bool background; // nothing was drawn here (depth is the clear value: 1, or 0 reversed)
 };
 
@@ -71,7 +72,9 @@ surface gbuffer_decode(vec4 albedo, vec4 nm, float depth, vec3 position)
     s.background = gbuffer_is_background(depth);
     s.position = position;
     s.albedo = albedo.rgb;
+    s.occlusion = 1.0;
     if (u_gbuffer_normal_encoding == SHADER_GBUFFER_NORMAL_HALF) {
+        s.occlusion = albedo.a;
         s.normal = octahedral_decode(nm.xy);
         s.specular = nm.z;
         s.shininess = nm.w;

@@ -52,7 +52,7 @@ void main()
     light_cone C = light_cone(v_light_direction, v_light_cos.x, v_light_cos.y);
     vec3 c = shade_light(L, C, s.position, n, v, s.albedo, s.specular, s.shininess);
 #ifdef OVERWRITE
-    c += shade_ambient(s.albedo);
+    c += shade_ambient(s.albedo * s.occlusion);
 #endif
     if (u_view == SHADER_VIEW_RING && v_volume_radius - d < ring_width)
         c += L.radiance / max(max(L.radiance.r, L.radiance.g), max(L.radiance.b, 1e-6));

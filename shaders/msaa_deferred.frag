@@ -85,7 +85,7 @@ vec3 shade_surface(surface s)
         return vec3(0.0);
     ivec2 range = cluster_range(cluster_index(gl_FragCoord.xy, cluster_view_depth(s.position)));
     vec3 v = safe_normalize(u_eye - s.position, s.normal);
-    return cluster_shade(range, s.position, s.normal, v, s.albedo, s.specular, s.shininess);
+    return cluster_shade(range, s.position, s.normal, v, s.albedo, s.specular, s.shininess, s.occlusion);
 }
 
 #ifdef MSAA_EDGES

@@ -58,13 +58,72 @@ vec3 safe_normalize(vec3 v, vec3 fallback)
     return len2 > 1e-30 ? v * inversesqrt(len2) : fallback;
 }
 
+// ---- the material: Blinn-Phong, or metallic-roughness (chapter 18, docs/18_pbr_materials.md) ----
+// Every renderer hands a surface's material to the shading functions as (albedo, specular, shininess).
+// Blinn-Phong's shininess is positive; a metallic-roughness material travels in the same three values
+// with a negative shininess: specular = metallic, shininess = -1 - roughness. One signature, so no
+// renderer's loop changes and a Blinn-Phong scene runs exactly the instructions it ran before.
+const float PI = 3.14159265358979;
+// Perceptual roughness is clamped here: below it GGX's peak (1 / (pi alpha^2)) outgrows a float's
+// useful range for the highlight of a point light, and roughness 0 would be 0 / 0 at n.h = 1.
+const float PBR_ROUGHNESS_MIN = 0.045;
+
+bool material_is_pbr(float shininess)
+{
+    return shininess < 0.0;
+}
+
+// The values the G-buffer keeps, so forward and deferred shade the same numbers: metallic to 8 bits,
+// roughness to the 1/1024 steps a half float holds -1 - roughness in.
+float pbr_metallic(float specular)
+{
+    return floor(clamp(specular, 0.0, 1.0) * 255.0 + 0.5) / 255.0;
+}
+
+float pbr_roughness(float shininess)
+{
+    float r = floor(clamp(-1.0 - shininess, 0.0, 1.0) * 1024.0 + 0.5) / 1024.0;
+    return max(r, PBR_ROUGHNESS_MIN);
+}
+
+// pi times the metallic-roughness BRDF for unit n, v, l with n.l > 0: GGX distribution D, Smith's
+// height-correlated visibility V (D V is D G / (4 n.l n.v)), Schlick's Fresnel F with F0 = mix(0.04,
+// base, metallic), and Lambert's diffuse times (1 - metallic), weighted by what Fresnel lets into the
+// surface at the light's angle and out of it at the eye's, (1 - F(n.l))(1 - F(n.v)): so a white surface
+// never returns more light than it receives (tests/unit/test_brdf_furnace.c). pi times, because the
+// course's lights are scaled so a white Lambert surface facing a light returns its radiance E
+// (Blinn-Phong's E n.l albedo).
+vec3 pbr_brdf(vec3 n, vec3 v, vec3 l, vec3 base, float specular, float shininess)
+{
+    float metallic = pbr_metallic(specular);
+    float alpha = pbr_roughness(shininess);
+    alpha *= alpha;
+    float a2 = alpha * alpha;
+    vec3 h = safe_normalize(l + v, n);
+    float ndl = clamp(dot(n, l), 0.0, 1.0);
+    // A normal turned from the eye (interpolation, a normal map) gives n.v <= 0: taken as grazing.
+    float ndv = clamp(dot(n, v), 1e-4, 1.0);
+    float ndh = clamp(dot(n, h), 0.0, 1.0);
+    float vdh = clamp(dot(v, h), 0.0, 1.0);
+    float d = ndh * ndh * (a2 - 1.0) + 1.0;
+    float D = a2 / (PI * d * d);
+    float V = 0.5 / (ndl * sqrt(ndv * ndv * (1.0 - a2) + a2) + ndv * sqrt(ndl * ndl * (1.0 - a2) + a2));
+    vec3 f0 = mix(vec3(0.04), base, metallic);
+    vec3 F = f0 + (1.0 - f0) * pow(1.0 - vdh, 5.0);
+    vec3 into = (1.0 - f0) * (1.0 - pow(1.0 - ndl, 5.0)); // 1 - F(n.l)
+    vec3 out_of = (1.0 - f0) * (1.0 - pow(1.0 - ndv, 5.0)); // 1 - F(n.v)
+    return into * out_of * (1.0 - metallic) * base + PI * D * V * F;
+}
+
 // What light L brings to p before any material meets it: its factor f (attenuation, window, cone),
-// n.l and the highlight (n.h)^shininess; false where it brings nothing. C is its cone
-// (light_fetch_cone(i)), NO_CONE for a point light; p world space, n and v unit.
+// n.l, the unit vector l towards it and, for Blinn-Phong, the highlight (n.h)^shininess; false where
+// it brings nothing. C is its cone (light_fetch_cone(i)), NO_CONE for a point light; p world space,
+// n and v unit.
 struct light_reach {
     float f;
     float ndl;
     float highlight;
+    vec3 l;
 };
 
 bool shade_light_reach(light_data L, light_cone C, vec3 p, vec3 n, vec3 v, float shininess, out light_reach r)
@@ -93,7 +152,7 @@ bool shade_light_reach(light_data L, light_cone C, vec3 p, vec3 n, vec3 v, float
         f *= w * w;
     }
     f *= spot;
-    r = light_reach(f, ndl, pow(max(dot(n, h), 0.0), shininess));
+    r = light_reach(f, ndl, material_is_pbr(shininess) ? 0.0 : pow(max(dot(n, h), 0.0), shininess), l);
     return true;
 }
 
@@ -105,6 +164,8 @@ vec3 shade_light(light_data L, light_cone C, vec3 p, vec3 n, vec3 v, vec3 albedo
     light_reach r;
     if (!shade_light_reach(L, C, p, n, v, shininess, r))
         return vec3(0.0);
+    if (material_is_pbr(shininess))
+        return r.f * L.radiance * r.ndl * pbr_brdf(n, v, r.l, albedo, specular, shininess);
     return r.f * L.radiance * (r.ndl * albedo + specular * r.highlight);
 }
 

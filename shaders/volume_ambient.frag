@@ -12,7 +12,7 @@ void main()
     surface s = gbuffer_read(ivec2(gl_FragCoord.xy));
     if (s.background)
         discard;
-    vec3 c = shade_ambient(s.albedo);
+    vec3 c = shade_ambient(s.albedo * s.occlusion);
 #ifdef OVERWRITE
     c = display_encode(c);
 #endif

@@ -1,6 +1,7 @@
-/* gen_scenes.c - writes the four benchmark scenes and the tessellated Utah teapot.
+/* gen_scenes.c - writes the four benchmark scenes, the textured PBR teapots, the tessellated Utah
+ * teapot and the PBR scene's procedural images.
  *
- *   gen_scenes --out DIR [--models DIR]
+ *   gen_scenes --out DIR [--models DIR] [--textures DIR]
  *
  * The scenes rebuild, in spirit, the test scenes of published deferred-shading
  * results (a city of cubes, a field of bunnies, one dense sphere, a table of
@@ -10,7 +11,8 @@
  *
  * This file is the command line only. The work is in tools/gen_scenes/ (not in tools/
  * itself, where the build makes every .c file a program of its own):
- *   recipes.c     the four scenes, and writing them with the teapot model
+ *   recipes.c     the five scenes, and writing them with the teapot model
+ *   pbr_textures.c  the PBR scene's images (stone tiles, a riveted metal panel), as PNG
  *   gen_scene.c   the in-memory scene and the .scene writer
  *   teapot.c      Bezier patch tessellation, welding, the OBJ writer
  *   gen_color.c   random colours (drawn from common/base/rng.c, the course's one generator)
@@ -29,18 +31,19 @@
 
 static void print_usage(FILE *stream)
 {
-    fprintf(stream, "usage: gen_scenes --out DIR [--models DIR]\n"
+    fprintf(stream, "usage: gen_scenes --out DIR [--models DIR] [--textures DIR]\n"
                     "\n"
-                    "Writes city.scene, bunnies.scene, sphere.scene and teapots.scene into --out, and the\n"
-                    "tessellated teapot.obj into --models (default: DIR/../models). The scenes name the\n"
-                    "models relative to --out. The bunny model must already be in --models as bunny.ply\n"
+                    "Writes city.scene, bunnies.scene, sphere.scene, teapots.scene and pbr_teapots.scene\n"
+                    "into --out, the tessellated teapot.obj into --models (default: DIR/../models) and the\n"
+                    "PBR scene's PNG images into --textures (default: DIR/../textures). The scenes name the\n"
+                    "models and images relative to --out. The bunny model must already be in --models as bunny.ply\n"
                     "(node tools/bunny_to_ply.mjs PATH_TO/node_modules/bunny MODELS/bunny.ply).\n"
                     "The output is deterministic: running it again reproduces the files byte for byte.\n");
 }
 
 int main(int argc, char **argv)
 {
-    const char *out_dir = NULL, *models_dir = NULL;
+    const char *out_dir = NULL, *models_dir = NULL, *textures_dir = NULL;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             print_usage(stdout);
@@ -49,6 +52,8 @@ int main(int argc, char **argv)
             out_dir = argv[++i];
         } else if (strcmp(argv[i], "--models") == 0 && i + 1 < argc) {
             models_dir = argv[++i];
+        } else if (strcmp(argv[i], "--textures") == 0 && i + 1 < argc) {
+            textures_dir = argv[++i];
         } else {
             log_error("gen_scenes: unknown or incomplete option '%s'", argv[i]);
             print_usage(stderr);
@@ -66,8 +71,15 @@ int main(int argc, char **argv)
         }
         models_dir = default_models;
     }
-    if (!gen_path_make_dir(out_dir) || !gen_path_make_dir(models_dir)) {
+    char default_textures[GEN_PATH_MAX];
+    if (!textures_dir) {
+        if (!gen_path_join(out_dir, "../textures", default_textures)) {
+            return 2;
+        }
+        textures_dir = default_textures;
+    }
+    if (!gen_path_make_dir(out_dir) || !gen_path_make_dir(models_dir) || !gen_path_make_dir(textures_dir)) {
         return 1;
     }
-    return recipes_write_all(out_dir, models_dir) ? 0 : 1;
+    return recipes_write_all(out_dir, models_dir, textures_dir) ? 0 : 1;
 }

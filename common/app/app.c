@@ -354,8 +354,10 @@ static int app_setup(app *a, const app_desc *desc)
         return EXIT_CODE_RUNTIME;
     /* --gbuffer: the layout of every G-buffer made from here on, the chapter's included; a reversed-Z
      * layout only where the chapter's lighting pass (its pass state, set by init) can take it. */
-    const gbuffer_layout *layout = a->options->gbuffer ? gbuffer_layout_find(a->options->gbuffer) : NULL;
-    if (layout && !gbuffer_set_default_layout(layout))
+    const gbuffer_layout *asked = a->options->gbuffer ? gbuffer_layout_find(a->options->gbuffer) : NULL;
+    /* A scene with metallic-roughness materials needs a layout that holds them (reference). */
+    const gbuffer_layout *layout = gbuffer_layout_for_scene(asked, &a->scene);
+    if (!layout || !gbuffer_set_default_layout(layout))
         return EXIT_CODE_USAGE;
     if (!app_target_make(a) || (desc->init && !desc->init(a)))
         return a->input_error ? EXIT_CODE_USAGE : EXIT_CODE_RUNTIME;
@@ -363,7 +365,7 @@ static int app_setup(app *a, const app_desc *desc)
         log_warn("%s: the scene's %d glass object(s) are not drawn by this chapter's %s renderer (chapter 12 adds "
                  "glass; --renderer forward draws it)",
                  desc->cli->program, a->gs.transparent_count, a->cli->renderers[a->renderer]);
-    return !layout || gbuffer_layout_fits_pass(layout, a->pass_state) ? EXIT_CODE_OK : EXIT_CODE_USAGE;
+    return !asked || gbuffer_layout_fits_pass(layout, a->pass_state) ? EXIT_CODE_OK : EXIT_CODE_USAGE;
 }
 
 static void app_close(app *a, const app_desc *desc)

@@ -3,6 +3,7 @@
 
 #include "app_internal.h"
 #include "exit_code.h"
+#include "gbuffer.h"
 #include "gl_util.h"
 #include "log.h"
 
@@ -21,6 +22,7 @@ struct app_embed {
     fbo linear_target; /* RGBA32F + depth: a frame drawn with linear output */
     bool have_init;
     bool no_linear; /* a frame with linear output was asked for and not drawn: do not ask again */
+    const gbuffer_layout *saved_layout; /* the default layout before a metallic-roughness scene changed it */
 };
 
 /* The chapters open now: each keeps its passes in file-static state. */
@@ -94,7 +96,13 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
         a->scene = *gs->src; /* a view of the caller's scene: never destroyed here */
         a->gs = *gs;
         a->query = gl_query_create();
-        ok = (!desc->accepts_scene || desc->accepts_scene(a)) && app_target_make(a) &&
+        /* A scene with metallic-roughness materials is drawn with a layout that holds them. */
+        const gbuffer_layout *layout = gbuffer_layout_for_scene(NULL, gs->src);
+        if (layout != gbuffer_default_layout()) {
+            e->saved_layout = gbuffer_default_layout();
+            ok = gbuffer_set_default_layout(layout);
+        }
+        ok = ok && (!desc->accepts_scene || desc->accepts_scene(a)) && app_target_make(a) &&
              (!desc->init || (e->have_init = desc->init(a)));
     }
     if (!ok) {
@@ -211,6 +219,8 @@ void app_embed_close(app_embed *e)
     fbo_destroy(&e->a.target);
     gl_query_destroy(&e->a.query);
     free_args(e->argv);
+    if (e->saved_layout)
+        gbuffer_set_default_layout(e->saved_layout);
     mark_open(e->desc, false);
     free(e);
 }

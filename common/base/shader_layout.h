@@ -8,7 +8,9 @@
  *                            cos(inner), spot direction xyz (unit) + 0; a point light is a spot
  *                            without a cone: direction 0, both cosines -1 (shaders/shading.glsl)
  *   object texels (RGBA32F): world matrix columns 0-3, normal matrix columns 4-6,
- *                            albedo + specular 7, shininess + opacity 8 (x, y)
+ *                            albedo + specular 7, shininess + opacity 8 (x, y), map layers 9,
+ *                            emissive + its map's layer 10 (a metallic-roughness material: specular is
+ *                            its metallic, shininess -1 - roughness; shaders/shading.glsl)
  *   views and tone maps:     the values of the u_view and u_tonemap uniforms; the overdraw view's
  *                            count per fragment and the heat map's saturation count
  *   texture units:           where each pass binds its textures (GLSL 3.30 has no binding layout)
@@ -24,11 +26,13 @@
 #define SHADER_LAYOUT(X)                                                                                   \
     X(LIGHT_TEXELS, 4)                                                                                     \
     X(LIGHT_TEXEL_SPOT, 3) /* the spot's direction; its cosines are the w of texels 1 and 2 */             \
-    X(OBJECT_TEXELS, 9)                                                                                    \
+    X(OBJECT_TEXELS, 11)                                                                                   \
     X(OBJECT_TEXEL_NORMAL, 4)                                                                              \
     X(OBJECT_TEXEL_MATERIAL, 7)                                                                            \
     X(OBJECT_TEXEL_SHININESS, 8)                                                                           \
     X(OBJECT_TEXEL_OPACITY, 8) /* the y of the shininess texel: the material's opacity (chapter 12) */     \
+    X(OBJECT_TEXEL_MAPS, 9)     /* chapter 18: layers of base, metal-rough, normal, occlusion; -1 none */  \
+    X(OBJECT_TEXEL_EMISSIVE, 10) /* chapter 18: emissive rgb, its map's layer (-1 none) */                 \
     X(VIEW_LIT, 0)                                                                                         \
     X(VIEW_RING, 1)                                                                                        \
     X(VIEW_OVERDRAW, 2)                                                                                    \
@@ -61,9 +65,11 @@
     X(SHADOW_TILE_TEXELS, 5) /* matrix columns 0-3, then (x, y, size in texels, tan of half the field) */  \
     X(SHADOW_MAX_PCF, 5)     /* the widest PCF kernel: 5 x 5 taps */                                   \
     X(UNIT_VIS_MESHES, 11)   /* chapter 16: vertices, indices, object -> mesh: three units */           \
-    X(MESH_VERTEX_FLOATS, 6) /* a vertex: position xyz, normal xyz (common/scene/mesh_data.h) */       \
+    X(MESH_VERTEX_FLOATS, 12) /* position xyz, normal xyz, uv, tangent xyzw (common/scene/mesh_data.h) */\
     X(VIS_TRIANGLE_BITS, 20) /* chapter 16's id: (object + 1) << 20 | triangle; 0 is the background */ \
     X(UNIT_AO, 14)           /* chapter 17: the ambient occlusion the ambient term reads */            \
+    X(UNIT_MAPS_SRGB, 11)    /* chapter 18: the colour images' array (gpu_textures.h), and beside it */ \
+    X(UNIT_MAPS_LINEAR, 12)  /* the data images': chapter 16's units, which no program samples with these */\
     X(AO_MAX_SAMPLES, 64)    /* the most SSAO kernel directions (--ao-samples) */                      \
     X(AO_STEPS, 4)           /* points marched along each kernel direction, r/4 apart */               \
     X(AO_NOISE_SIZE, 4)      /* the rotation noise tile: 4 x 4 pixels, removed by a blur that wide */

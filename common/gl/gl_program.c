@@ -233,6 +233,18 @@ static GLuint link(const GLuint *stages, int count, const char *what)
         return 0;
     }
     gl_live_objects_add(1);
+    /* The material images' samplers (shaders/material_maps.glsl) on their own units from the start: a
+     * pass that binds no images must not leave them on unit 0, where another sampler type is
+     * (two types on one unit make every draw GL_INVALID_OPERATION). */
+    GLint srgb = glGetUniformLocation(p, "u_maps_srgb"), linear = glGetUniformLocation(p, "u_maps_linear");
+    if (srgb >= 0 || linear >= 0) {
+        GLint current = 0;
+        glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+        glUseProgram(p);
+        glUniform1i(srgb, SHADER_UNIT_MAPS_SRGB);
+        glUniform1i(linear, SHADER_UNIT_MAPS_LINEAR);
+        glUseProgram((GLuint)current);
+    }
     return p;
 }
 

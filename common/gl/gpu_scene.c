@@ -61,6 +61,10 @@ bool gpu_scene_create(const scene *src, gpu_scene *out)
         else
             out->batches[out->batch_count++] = (gpu_batch){.mesh = o->mesh, .first = i, .count = 1};
     }
+    if (!gpu_textures_create(src, &out->textures)) {
+        gpu_scene_destroy(out);
+        return false;
+    }
     out->light_buffer = gl_buffer_create();
     out->light_texture = gl_texture_create();
     out->object_buffer = gl_buffer_create();
@@ -73,6 +77,7 @@ void gpu_scene_destroy(gpu_scene *gs)
     if (gs->meshes && gs->src)
         for (int i = 0; i < gs->src->mesh_count; i++)
             mesh_destroy(&gs->meshes[i]);
+    gpu_textures_destroy(&gs->textures);
     gl_buffer_destroy(&gs->light_buffer);
     gl_texture_destroy(&gs->light_texture);
     gl_buffer_destroy(&gs->object_buffer);
@@ -133,10 +138,21 @@ static void update_objects(gpu_scene *gs, float time)
             column[3] = 0.0f;
         }
         const scene_material *m = &s->materials[o->material];
-        const float material[4] = {m->albedo[0], m->albedo[1], m->albedo[2], m->specular};
-        const float shininess[4] = {m->shininess, m->opacity, 0, 0};
+        /* A metallic-roughness material travels as specular = metallic, shininess = -1 - roughness
+         * (shaders/shading.glsl: a negative shininess marks it). */
+        const float material[4] = {m->albedo[0], m->albedo[1], m->albedo[2], m->pbr ? m->metallic : m->specular};
+        const float shininess[4] = {m->pbr ? -1.0f - m->roughness : m->shininess, m->opacity, 0, 0};
         memcpy(t + 4 * SHADER_OBJECT_TEXEL_MATERIAL, material, sizeof material);
         memcpy(t + 4 * SHADER_OBJECT_TEXEL_SHININESS, shininess, sizeof shininess);
+        /* The maps: each one's layer in its array (gpu_textures.h), -1 for none. */
+        float *maps = t + 4 * SHADER_OBJECT_TEXEL_MAPS;
+        for (int k = 0; k < 4; k++)
+            maps[k] = m->pbr && m->maps[k] >= 0 ? (float)gs->textures.layer[m->maps[k]] : -1.0f;
+        float *emissive = t + 4 * SHADER_OBJECT_TEXEL_EMISSIVE;
+        for (int k = 0; k < 3; k++)
+            emissive[k] = m->pbr ? m->emissive[k] : 0.0f;
+        emissive[3] = m->pbr && m->maps[SCENE_MAP_EMISSIVE] >= 0 ? (float)gs->textures.layer[m->maps[SCENE_MAP_EMISSIVE]]
+                                                                 : -1.0f;
     }
     size_t bytes = ((size_t)s->object_count + 1) * SHADER_OBJECT_TEXELS * 4 * sizeof(float);
     gl_texture_buffer_upload(gs->object_buffer, gs->object_texture, GL_RGBA32F, gs->object_texels, bytes);
@@ -257,6 +273,7 @@ void gpu_scene_bind_objects(const gpu_scene *gs, GLuint program, int unit)
     glBindTexture(GL_TEXTURE_BUFFER, gs->object_texture);
     glActiveTexture(GL_TEXTURE0);
     glUniform1i(glGetUniformLocation(program, "u_objects"), unit);
+    gpu_textures_bind(&gs->textures, program); /* the materials' images, on their own two units */
     glUniformMatrix4fv(glGetUniformLocation(program, "u_view_proj"), 1, GL_FALSE, (const float *)gs->view.view_proj);
 }
 

@@ -10,7 +10,8 @@
  *                                    u_lights (texture buffer on `unit`), u_light_count, u_ambient,
  *                                    u_falloff (gs->falloff: the scene's falloff model)
  *   gpu_scene_bind_objects(gs, program, unit)
- *                                    u_objects (texture buffer on `unit`) and u_view_proj
+ *                                    u_objects (texture buffer on `unit`) and u_view_proj, and the
+ *                                    materials' images (gpu_textures_bind)
  *   gpu_scene_draw(gs, program)      every OPAQUE object: one instanced draw per batch of consecutive
  *                                    objects that share a mesh (the city's 2,490 cubes are one draw);
  *                                    the transparent ones (material opacity < 1) are left out, so
@@ -35,6 +36,7 @@
 #define COMMON_GPU_SCENE_H
 
 #include "gl_util.h"
+#include "gpu_textures.h"
 #include "mesh.h"
 #include "scene.h"
 #include "shader_layout.h"
@@ -94,6 +96,7 @@ typedef struct gpu_scene {
     int transparent_count;
     GLuint light_buffer, light_texture;
     GLuint object_buffer, object_texture;
+    gpu_textures textures; /* the materials' images (chapter 18) */
     float *texels;
     float *object_texels;
     frame_view view;

@@ -22,7 +22,11 @@ bool mesh_create(const mesh_data *data, mesh *out)
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, (const void *)0);
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, (const void *)(3 * sizeof(float)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, (const void *)(MESH_VERTEX_NORMAL * sizeof(float)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, (const void *)(MESH_VERTEX_UV * sizeof(float)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, (const void *)(MESH_VERTEX_TANGENT * sizeof(float)));
     glBindVertexArray(0);
     out->index_count = data->index_count;
     memcpy(out->bounds_min, data->bounds_min, sizeof out->bounds_min);

@@ -49,6 +49,14 @@ static const key_binding table[] = {
     {'K', "K", "14", KEY_ACTION_CHAPTER, "shadows on / off (off: every light unshadowed, chapter 11's picture)"},
     {'B', "B", "15", KEY_ACTION_CHAPTER, "light buffer's specular: rgb (two targets, forward's picture) or mono (one channel)"},
     {'O', "O", "17", KEY_ACTION_CHAPTER, "ambient occlusion on / off (off: chapter 11's picture)"},
+    {'1', "1-7", "18", KEY_ACTION_CHAPTER, "view: lit, albedo, metallic, roughness, normal, occlusion, depth (as --view)"},
+    {'-', "-", "18", KEY_ACTION_CHAPTER, "halve the exposure (chapter 18 takes - and + from the generated lights)"},
+    {'=', "+", "18", KEY_ACTION_CHAPTER, "double the exposure"},
+    {'T', "T", "18", KEY_ACTION_CHAPTER, "halve the ambient light"},
+    {'Y', "Y", "18", KEY_ACTION_CHAPTER, "double the ambient light"},
+    {'I', "IJKL", "18", KEY_ACTION_CHAPTER, "move every light together: away, left, nearer, right (-z, -x, +z, +x)"},
+    {KEY_UP, "Up", "18", KEY_ACTION_CHAPTER, "move every light together up"},
+    {KEY_DOWN, "Down", "18", KEY_ACTION_CHAPTER, "move every light together down"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])
@@ -59,19 +67,38 @@ static bool applies(const key_binding *b, const char *program)
     return !b->chapters || (program && strncmp(program, b->chapters, strlen(b->chapters)) == 0);
 }
 
-const key_binding *keys_find(int code, const char *program)
+/* A row that stands for a group of keys ("1-7", "IJKL") also matches its others. */
+static bool matches(const key_binding *b, int code)
+{
+    if (b->code == code)
+        return true;
+    if (strcmp(b->label, "1-7") == 0)
+        return code >= '1' && code <= '7';
+    return strcmp(b->label, "IJKL") == 0 && (code == 'J' || code == 'K' || code == 'L');
+}
+
+/* A chapter's own binding wins over the shared one of the same key (chapter 18's - and +). */
+static const key_binding *find(int code, const char *program, bool chapter_only)
 {
     for (size_t i = 0; i < TABLE_SIZE; i++)
-        if (code != KEY_MOUSE && table[i].code == code && applies(&table[i], program))
+        if (code != KEY_MOUSE && matches(&table[i], code) && applies(&table[i], program) &&
+            (!chapter_only || table[i].chapters))
             return &table[i];
     return NULL;
+}
+
+const key_binding *keys_find(int code, const char *program)
+{
+    const key_binding *own = find(code, program, true);
+    return own ? own : find(code, program, false);
 }
 
 void keys_print_help(FILE *stream, const char *program, bool views)
 {
     fprintf(stream, "\nwindow keys:\n");
     for (size_t i = 0; i < TABLE_SIZE; i++)
-        if (applies(&table[i], program) && (views || table[i].action != KEY_ACTION_VIEW))
+        if (applies(&table[i], program) && (views || table[i].action != KEY_ACTION_VIEW) &&
+            (table[i].code == KEY_MOUSE || keys_find(table[i].code, program) == &table[i])) /* not taken over */
             fprintf(stream, "  %-10s %s\n", table[i].label, table[i].does);
 }
 

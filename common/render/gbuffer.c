@@ -7,6 +7,7 @@
 #include "log.h"
 #include "mat4d.h"
 
+#include <stdio.h>
 #include <string.h>
 
 /* What each loses is measured by tests/unit/test_octahedral.c (normals) and the benchmark's
@@ -110,6 +111,35 @@ bool gbuffer_set_default_layout(const gbuffer_layout *layout)
 }
 
 const gbuffer_layout *gbuffer_default_layout(void) { return default_layout; }
+
+/* A metallic-roughness material is marked by a negative shininess (shaders/shading.glsl): only a
+ * half-float RT1 keeps the sign; the fixed-point ones clamp it to 0, a Blinn-Phong shininess of 1. */
+bool gbuffer_layout_holds_pbr(const gbuffer_layout *layout)
+{
+    return layout->normal_encoding == SHADER_GBUFFER_NORMAL_HALF;
+}
+
+const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, const scene *s)
+{
+    bool pbr = false;
+    for (int i = 0; i < s->material_count; i++)
+        pbr = pbr || s->materials[i].pbr;
+    if (!pbr)
+        return layout ? layout : default_layout;
+    if (!layout)
+        return gbuffer_layout_holds_pbr(default_layout) ? default_layout : &gbuffer_layouts[GBUFFER_LAYOUT_REFERENCE];
+    if (gbuffer_layout_holds_pbr(layout))
+        return layout;
+    char holds[128] = "";
+    for (int i = 0; i < GBUFFER_LAYOUT_COUNT; i++)
+        if (gbuffer_layout_holds_pbr(&gbuffer_layouts[i]))
+            snprintf(holds + strlen(holds), sizeof holds - strlen(holds), "%s%s", holds[0] ? ", " : "",
+                     gbuffer_layout_names[i]);
+    log_error("G-buffer layout %s cannot hold the scene's metallic-roughness materials (its RT1 is fixed-point: "
+              "docs/18_pbr_materials.md); layouts that can: %s",
+              gbuffer_layout_name(layout), holds);
+    return NULL;
+}
 
 bool gbuffer_layout_fits_pass(const gbuffer_layout *layout, const gl_pass_state *pass)
 {

@@ -42,6 +42,12 @@
  *   gbuffer_set_default_layout(layout)   the layout gbuffer_create uses from now on (the runner's
  *                                        --gbuffer); false, logged, when not available
  *   gbuffer_default_layout()
+ *   gbuffer_layout_holds_pbr(layout)     whether the layout keeps metallic-roughness materials (a
+ *                                        half-float RT1: reference)
+ *   gbuffer_layout_for_scene(layout, s)  the layout to draw s with: `layout` (NULL: the default), or
+ *                                        for a scene with metallic-roughness materials and no layout
+ *                                        asked for, reference; NULL, logged, when the one asked for
+ *                                        cannot hold them
  *   gbuffer_layout_fits_pass(layout, pass)
  *                                        false, with one line logged, for a reversed-Z layout and a
  *                                        lighting pass written for standard depth (see below)
@@ -166,6 +172,8 @@ GLenum gbuffer_layout_depth_format(const gbuffer_layout *layout, bool stencil);
 bool gbuffer_layout_available(const gbuffer_layout *layout);
 bool gbuffer_set_default_layout(const gbuffer_layout *layout);
 const gbuffer_layout *gbuffer_default_layout(void);
+bool gbuffer_layout_holds_pbr(const gbuffer_layout *layout);
+const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, const scene *s);
 bool gbuffer_layout_fits_pass(const gbuffer_layout *layout, const gl_pass_state *pass);
 
 void gbuffer_depth_test_begin(const gbuffer *g, const gpu_scene *gs, gpu_scene *view, gl_pass_state *state);

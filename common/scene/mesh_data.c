@@ -29,10 +29,25 @@ static bool mesh_alloc(mesh_data *m, int vertices, int indices)
     return true;
 }
 
-static void set_vertex(mesh_data *m, int i, float px, float py, float pz, float nx, float ny, float nz)
+void mesh_data_put_vertex(mesh_data *m, int i, const float pos[3], const float normal[3], const float uv[2],
+                          const float tangent[4])
 {
     float *v = m->vertices + (size_t)i * MESH_VERTEX_FLOATS;
-    v[0] = px, v[1] = py, v[2] = pz, v[3] = nx, v[4] = ny, v[5] = nz;
+    memcpy(v + MESH_VERTEX_POSITION, pos, 3 * sizeof(float));
+    memcpy(v + MESH_VERTEX_NORMAL, normal, 3 * sizeof(float));
+    v[MESH_VERTEX_UV] = uv ? uv[0] : 0.0f;
+    v[MESH_VERTEX_UV + 1] = uv ? uv[1] : 0.0f;
+    /* No tangent: w = 0 asks mesh_data_generate_tangents for one. */
+    for (int k = 0; k < 4; k++)
+        v[MESH_VERTEX_TANGENT + k] = tangent ? tangent[k] : 0.0f;
+}
+
+/* The built-in shapes: a position, a normal and a texture coordinate; tangents are generated. */
+static void set_vertex(mesh_data *m, int i, float px, float py, float pz, float nx, float ny, float nz, float u,
+                       float v)
+{
+    mesh_data_put_vertex(m, i, (const float[3]){px, py, pz}, (const float[3]){nx, ny, nz}, (const float[2]){u, v},
+                         NULL);
 }
 
 static void compute_bounds(mesh_data *m)
@@ -69,13 +84,16 @@ bool mesh_data_cube(mesh_data *m)
             float p[3];
             for (int k = 0; k < 3; k++)
                 p[k] = 0.5f * (n[k] + corners[c][0] * u[k] + corners[c][1] * v[k]);
-            set_vertex(m, f * 4 + c, p[0], p[1], p[2], n[0], n[1], n[2]);
+            /* The face's u axis is the texture's s, its v axis t: the image upright on every side face. */
+            set_vertex(m, f * 4 + c, p[0], p[1], p[2], n[0], n[1], n[2], 0.5f * (corners[c][0] + 1.0f),
+                       0.5f * (corners[c][1] + 1.0f));
         }
         static const int quad[6] = {0, 1, 2, 0, 2, 3};
         for (int i = 0; i < 6; i++)
             m->indices[f * 6 + i] = (uint32_t)(f * 4 + quad[i]);
     }
     compute_bounds(m);
+    mesh_data_generate_tangents(m);
     return true;
 }
 
@@ -83,13 +101,15 @@ bool mesh_data_plane(mesh_data *m)
 {
     if (!mesh_alloc(m, 4, 6))
         return false;
-    set_vertex(m, 0, -0.5f, 0, 0.5f, 0, 1, 0);
-    set_vertex(m, 1, 0.5f, 0, 0.5f, 0, 1, 0);
-    set_vertex(m, 2, 0.5f, 0, -0.5f, 0, 1, 0);
-    set_vertex(m, 3, -0.5f, 0, -0.5f, 0, 1, 0);
+    /* s along +X, t along -Z: seen from above, the image upright. */
+    set_vertex(m, 0, -0.5f, 0, 0.5f, 0, 1, 0, 0, 0);
+    set_vertex(m, 1, 0.5f, 0, 0.5f, 0, 1, 0, 1, 0);
+    set_vertex(m, 2, 0.5f, 0, -0.5f, 0, 1, 0, 1, 1);
+    set_vertex(m, 3, -0.5f, 0, -0.5f, 0, 1, 0, 0, 1);
     static const uint32_t idx[6] = {0, 1, 2, 0, 2, 3};
     memcpy(m->indices, idx, sizeof idx);
     compute_bounds(m);
+    mesh_data_generate_tangents(m);
     return true;
 }
 
@@ -111,7 +131,8 @@ bool mesh_data_sphere(mesh_data *m, int slices, int stacks)
             float x = (float)(sin(theta) * cos(phi)), y = (float)cos(theta), z = (float)(-sin(theta) * sin(phi));
             if (j == 0 || j == stacks)
                 x = 0.0f, z = 0.0f, y = j == 0 ? 1.0f : -1.0f;
-            set_vertex(m, j * cols + i, x, y, z, x, y, z);
+            /* s round the equator (the seam column i = slices repeats i = 0 with s = 1), t pole to pole. */
+            set_vertex(m, j * cols + i, x, y, z, x, y, z, (float)i / (float)slices, 1.0f - (float)j / (float)stacks);
         }
     }
     int k = 0;
@@ -128,6 +149,7 @@ bool mesh_data_sphere(mesh_data *m, int slices, int stacks)
     }
     m->index_count = k;
     compute_bounds(m);
+    mesh_data_generate_tangents(m);
     return true;
 }
 
@@ -199,10 +221,10 @@ bool mesh_data_icosphere(mesh_data *m, int subdivisions)
         ok = mesh_alloc(m, verts, tris * 3);
         if (ok) {
             for (int i = 0; i < verts; i++)
-                set_vertex(m, i, pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], pos[3 * i], pos[3 * i + 1],
-                           pos[3 * i + 2]);
+                mesh_data_put_vertex(m, i, pos + 3 * i, pos + 3 * i, NULL, NULL); /* a light volume: no texture */
             memcpy(m->indices, idx, (size_t)tris * 3 * sizeof(uint32_t));
             compute_bounds(m);
+            mesh_data_generate_tangents(m);
         }
     } else {
         log_error("out of memory for an icosphere");
@@ -253,6 +275,36 @@ static void count_node(const struct aiScene *sc, const struct aiNode *node, int 
         count_node(sc, node->mChildren[c], verts, idx);
 }
 
+/* A model's vertex: its first texture coordinate set when it has one, and Assimp's tangent when that is
+ * usable (finite, not along the normal); else w = 0, for mesh_data_generate_tangents. */
+static void put_model_vertex(mesh_data *m, int i, const struct aiMesh *mesh, unsigned v,
+                             const struct aiMatrix4x4 *world, struct aiVector3D p, struct aiVector3D n)
+{
+    const float pos[3] = {p.x, p.y, p.z}, normal[3] = {n.x, n.y, n.z};
+    float uv[2] = {0.0f, 0.0f}, tangent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    if (mesh->mTextureCoords[0] && isfinite(mesh->mTextureCoords[0][v].x) && isfinite(mesh->mTextureCoords[0][v].y)) {
+        uv[0] = mesh->mTextureCoords[0][v].x;
+        uv[1] = mesh->mTextureCoords[0][v].y;
+    }
+    if (mesh->mTextureCoords[0] && mesh->mTangents && mesh->mBitangents) {
+        struct aiMatrix3x3 linear;
+        aiMatrix3FromMatrix4(&linear, world);
+        struct aiVector3D t = mesh->mTangents[v], b = mesh->mBitangents[v];
+        aiTransformVecByMatrix3(&t, &linear);
+        aiTransformVecByMatrix3(&b, &linear);
+        float tn = t.x * n.x + t.y * n.y + t.z * n.z;
+        t = (struct aiVector3D){t.x - tn * n.x, t.y - tn * n.y, t.z - tn * n.z};
+        float len = sqrtf(t.x * t.x + t.y * t.y + t.z * t.z);
+        if (len > 1e-12f && isfinite(len)) {
+            /* Handedness: whether the bitangent runs along n x t or against it (a mirrored UV layout). */
+            float c[3] = {n.y * t.z - n.z * t.y, n.z * t.x - n.x * t.z, n.x * t.y - n.y * t.x};
+            float w = c[0] * b.x + c[1] * b.y + c[2] * b.z < 0.0f ? -1.0f : 1.0f;
+            tangent[0] = t.x / len, tangent[1] = t.y / len, tangent[2] = t.z / len, tangent[3] = w;
+        }
+    }
+    mesh_data_put_vertex(m, i, pos, normal, uv, tangent[3] != 0.0f ? tangent : NULL);
+}
+
 static void copy_node(const struct aiScene *sc, const struct aiNode *node, struct aiMatrix4x4 parent,
                       mesh_data *m, int *vbase, int *ibase)
 {
@@ -275,7 +327,7 @@ static void copy_node(const struct aiScene *sc, const struct aiNode *node, struc
             /* Degenerate input gives zero-length or NaN normals: use +Y rather than NaN pixels. */
             if (!(len > 1e-20f) || !isfinite(len))
                 n = (struct aiVector3D){0, 1, 0}, len = 1;
-            set_vertex(m, *vbase + (int)v, p.x, p.y, p.z, n.x / len, n.y / len, n.z / len);
+            put_model_vertex(m, *vbase + (int)v, mesh, v, &world, p, (struct aiVector3D){n.x / len, n.y / len, n.z / len});
         }
         for (unsigned f = 0; f < mesh->mNumFaces; f++) {
             const struct aiFace *face = &mesh->mFaces[f];
@@ -290,10 +342,11 @@ static void copy_node(const struct aiScene *sc, const struct aiNode *node, struc
         copy_node(sc, node->mChildren[c], world, m, vbase, ibase);
 }
 
-/* The steps after the validated import (model_file.c): triangles and welded vertices with normals. */
+/* The steps after the validated import (model_file.c): triangles and welded vertices with normals, and
+ * tangents where the mesh has texture coordinates (Assimp computes none without). */
 #define MESH_POST_STEPS                                                                                        \
     (aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |                    \
-     aiProcess_FindDegenerates | aiProcess_SortByPType | aiProcess_FindInvalidData)
+     aiProcess_FindDegenerates | aiProcess_SortByPType | aiProcess_FindInvalidData | aiProcess_CalcTangentSpace)
 
 static bool load_bytes(mesh_data *m, const char *path, const char *data, size_t size, bool siblings,
                        const model_limits *lim, const char *pre)
@@ -321,6 +374,7 @@ static bool load_bytes(mesh_data *m, const char *path, const char *data, size_t 
         copy_node(sc, sc->mRootNode, identity, m, &vbase, &ibase);
         m->index_count = ibase;
         compute_bounds(m);
+        mesh_data_generate_tangents(m);
         for (int i = 0; ok && i < m->vertex_count * MESH_VERTEX_FLOATS; i++)
             if (!isfinite(m->vertices[i])) {
                 log_error("%s: model '%s' has a non-finite vertex coordinate", pre, path);

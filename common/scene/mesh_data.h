@@ -12,11 +12,21 @@
  *                                        the model names are not read): the fuzz target's way in
  *   mesh_data_from_scene(m, s, decl)     the mesh a scene's `mesh` line declares (built-in or
  *                                        file), errors at that line
+ *   mesh_data_put_vertex(m, i, pos, normal, uv, tangent)
+ *                                        write vertex i; uv NULL: 0 0; tangent NULL: w = 0, one to be
+ *                                        made by mesh_data_generate_tangents
+ *   mesh_data_generate_tangents(m)       a unit tangent and its handedness for every vertex whose w is
+ *                                        0, from its triangles' texture coordinates; where those are
+ *                                        degenerate (no UVs, a zero-area UV triangle) any unit vector at
+ *                                        right angles to the normal (mesh_tangents.c)
  *   mesh_data_destroy(m)
  *   mesh_data_inradius(m)                smallest distance from the origin to a face's plane:
  *                                        scale a volume mesh by r / inradius to contain the sphere r
  *
- * Vertices are interleaved: position xyz, normal xyz (6 floats). Indices are 32-bit.
+ * Vertices are interleaved: position xyz, normal xyz, texture coordinate uv, tangent xyz and w, the
+ * handedness: bitangent = w * cross(normal, tangent) (12 floats). Indices are 32-bit. The built-in
+ * shapes have texture coordinates (the cube's and the plane's 0..1 per face, the sphere's longitude
+ * and latitude) and every mesh has tangents.
  */
 #ifndef COMMON_MESH_DATA_H
 #define COMMON_MESH_DATA_H
@@ -29,6 +39,9 @@
 #include <stdint.h>
 
 #define MESH_VERTEX_FLOATS SHADER_MESH_VERTEX_FLOATS /* written once: chapter 16's shader reads them */
+/* Where each attribute starts in a vertex, in floats. */
+enum { MESH_VERTEX_POSITION = 0, MESH_VERTEX_NORMAL = 3, MESH_VERTEX_UV = 6, MESH_VERTEX_TANGENT = 8 };
+_Static_assert(MESH_VERTEX_TANGENT + 4 == MESH_VERTEX_FLOATS, "position, normal, uv, tangent");
 
 typedef struct mesh_data {
     float *vertices;
@@ -46,6 +59,9 @@ bool mesh_data_icosphere(mesh_data *m, int subdivisions);
 bool mesh_data_load(mesh_data *m, const char *path, const char *origin);
 bool mesh_data_load_memory(mesh_data *m, const char *name, const void *data, size_t size, const char *origin);
 bool mesh_data_from_scene(mesh_data *m, const scene *s, const scene_mesh *decl);
+void mesh_data_put_vertex(mesh_data *m, int i, const float pos[3], const float normal[3], const float uv[2],
+                          const float tangent[4]);
+void mesh_data_generate_tangents(mesh_data *m);
 void mesh_data_destroy(mesh_data *m);
 double mesh_data_inradius(const mesh_data *m);
 

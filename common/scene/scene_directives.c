@@ -148,6 +148,22 @@ static bool take_material_attribute(parser *p, scene_material *m, unsigned *seen
     }
 }
 
+/* The rest of a Blinn-Phong material's line: albedo, then its attributes. */
+static bool take_blinn_phong(parser *p, scene_material *m)
+{
+    if (strcmp(p->tok[p->pos], "albedo") != 0)
+        return scene_parser_fail(p, "material '%s': expected 'albedo' or 'pbr', got '%s'", m->name,
+                                 scene_parser_show_token(p->tok[p->pos]).text);
+    p->pos++;
+    if (!scene_parser_take_vec3(p, "material albedo", NUMBER_NON_NEGATIVE, m->albedo))
+        return false;
+    unsigned seen = 0;
+    while (!scene_parser_at_end(p))
+        if (!take_material_attribute(p, m, &seen))
+            return false;
+    return true;
+}
+
 static bool parse_material(parser *p)
 {
     _Static_assert(SCENE_MAP_COUNT == 5, "one -1 per map below");
@@ -159,16 +175,13 @@ static bool parse_material(parser *p)
         return scene_parser_fail(p, "material '%s' is already declared on line %d", m.name, dup->line);
     if (scene_parser_at_end(p))
         return scene_parser_fail(p, "material '%s': missing 'albedo R G B'", m.name);
-    if (strcmp(p->tok[p->pos], "albedo") != 0)
-        return scene_parser_fail(p, "material '%s': expected 'albedo', got '%s'", m.name,
-                                 scene_parser_show_token(p->tok[p->pos]).text);
-    p->pos++;
-    if (!scene_parser_take_vec3(p, "material albedo", NUMBER_NON_NEGATIVE, m.albedo))
-        return false;
-    unsigned seen = 0;
-    while (!scene_parser_at_end(p))
-        if (!take_material_attribute(p, &m, &seen))
+    if (strcmp(p->tok[p->pos], "pbr") == 0) {
+        p->pos++;
+        if (!scene_parser_take_pbr(p, &m))
             return false;
+    } else if (!take_blinn_phong(p, &m)) {
+        return false;
+    }
     scene_material *grown =
         scene_parser_append(p, p->s.materials, &p->s.material_count, &p->material_cap, &m, sizeof m);
     if (!grown)
@@ -177,26 +190,27 @@ static bool parse_material(parser *p)
     return scene_parser_add_name(p, &p->material_names, m.name, p->s.material_count - 1);
 }
 
-/* Model paths are relative to the scene file's folder, then to the data folder; absolute paths are
- * kept. */
-static bool resolve_model(parser *p, const char *given, char out[SCENE_PATH_MAX])
+/* Model and image paths are relative to the scene file's folder, then to the data folder; absolute
+ * paths are kept. `what` names the file in messages ("model", "image"). */
+bool scene_parser_resolve_file(parser *p, const char *what, const char *given, char out[SCENE_PATH_MAX])
 {
     size_t base = given[0] == '/' ? 0 : strlen(p->base_dir);
     if (base + 1 + strlen(given) >= SCENE_PATH_MAX)
-        return scene_parser_fail(p, "model path '%s' is longer than %d characters",
+        return scene_parser_fail(p, "%s path '%s' is longer than %d characters", what,
                                  scene_parser_show_token(given).text, SCENE_PATH_MAX - 1);
     char tried[2 * SCENE_PATH_MAX + 4400];
     if (!data_dir_find(given, p->base_dir, out, SCENE_PATH_MAX, tried, sizeof tried))
-        return scene_parser_fail(p, "cannot open model '%s': No such file or directory (looked for %s)", out, tried);
-    /* Only check that the file is there and readable: the mesh loader reads it later. */
+        return scene_parser_fail(p, "cannot open %s '%s': No such file or directory (looked for %s)", what, out,
+                                 tried);
+    /* Only check that the file is there and readable: its loader reads it later. */
     FILE *f = fopen(out, "rb");
     if (!f)
-        return scene_parser_fail(p, "cannot open model '%s': %s", out, strerror(errno));
+        return scene_parser_fail(p, "cannot open %s '%s': %s", what, out, strerror(errno));
     struct stat st;
     bool regular = fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode);
     fclose(f);
     if (!regular)
-        return scene_parser_fail(p, "cannot open model '%s': not a regular file", out);
+        return scene_parser_fail(p, "cannot open %s '%s': not a regular file", what, out);
     return true;
 }
 
@@ -222,7 +236,7 @@ static bool take_mesh_kind(parser *p, scene_mesh *m)
         m->kind = SCENE_MESH_FILE;
         if (scene_parser_at_end(p))
             return scene_parser_fail(p, "mesh '%s': missing model path after 'file'", m->name);
-        if (!resolve_model(p, p->tok[p->pos++], m->path))
+        if (!scene_parser_resolve_file(p, "model", p->tok[p->pos++], m->path))
             return false;
     } else {
         return scene_parser_fail(p, "mesh '%s': unknown kind '%s' (expected cube, plane, sphere or file)",

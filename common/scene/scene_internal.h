@@ -1,5 +1,6 @@
 /* scene_internal.h - the scene module's inside: the parser state and the helpers its files share (internal:
- * only scene.c, scene_parser.c, scene_directives.c and scene_lights.c include it; everyone else uses scene.h).
+ * only scene.c, scene_parser.c, scene_directives.c, scene_materials.c and scene_lights.c include it;
+ * everyone else uses scene.h).
  *
  * scene_parser.c:
  *   scene_parser_fail(p, fmt, ...)                       log "NAME:LINE: message"; returns false
@@ -19,6 +20,9 @@
  *   scene_parser_take_switch(p, what, &off)              read `on` or `off` (off sets *off)
  * scene_directives.c:
  *   scene_parser_run_directive(p)                        parse a tokenized line by its directive
+ *   scene_parser_resolve_file(p, what, given, out)       a model or image path, found and readable
+ * scene_materials.c:
+ *   scene_parser_take_pbr(p, m)                          the rest of a `material NAME pbr ...` line
  * scene_lights.c:
  *   scene_parser_parse_light(p), scene_parser_parse_spot(p), scene_parser_parse_key(p)
  *                                                        the light, spot and key directives
@@ -77,7 +81,7 @@ typedef struct parser {
     int count; /* tokens on this line */
     int pos;   /* next token to read */
     scene s;
-    int mesh_cap, material_cap, object_cap, light_cap;
+    int mesh_cap, material_cap, object_cap, light_cap, texture_cap;
     name_table mesh_names, material_names;
     int camera_line, ambient_line, falloff_line; /* 0 until given */
     last_kind last;                /* what a "key" line attaches to */
@@ -109,6 +113,8 @@ int scene_parser_take_attribute(parser *p, const char *what, const char *const n
 bool scene_parser_take_switch(parser *p, const char *what, bool *off);
 
 bool scene_parser_run_directive(parser *p);
+bool scene_parser_resolve_file(parser *p, const char *what, const char *given, char out[SCENE_PATH_MAX]);
+bool scene_parser_take_pbr(parser *p, scene_material *m);
 bool scene_parser_parse_light(parser *p);
 bool scene_parser_parse_spot(parser *p);
 bool scene_parser_parse_key(parser *p);

@@ -474,7 +474,7 @@ static void test_errors(void **state)
         {"mesh a234567890123456789012345678901234567890123456789012345678901234 cube\n",
          "t.scene:1: mesh: name 'a23456789012345678901234567890123456789012345678...' is longer than 63"},
         {"material m\n", "t.scene:1: material 'm': missing 'albedo R G B'"},
-        {"material m color 1 1 1\n", "t.scene:1: material 'm': expected 'albedo', got 'color'"},
+        {"material m color 1 1 1\n", "t.scene:1: material 'm': expected 'albedo' or 'pbr', got 'color'"},
         {"material m albedo 1 1 1 shininess 0\n", "t.scene:1: material shininess: must be > 0, got '0'"},
         {"material m albedo 1 1 1 specular -1\n", "t.scene:1: material specular: must be >= 0, got '-1'"},
         {"material m albedo 1 1 1 shininess\n", "t.scene:1: material shininess: missing number"},

@@ -29,6 +29,18 @@ int gen_scene_add_material(gen_scene *s, const char *name, const double albedo[3
     return s->material_count++;
 }
 
+int gen_scene_add_pbr_material(gen_scene *s, const char *name, const double base[3], double metallic,
+                               double roughness, const char *maps)
+{
+    int i = gen_scene_add_material(s, name, base, 0, 32);
+    gen_material *m = &s->materials[i];
+    m->pbr = true;
+    m->metallic = metallic;
+    m->roughness = roughness;
+    snprintf(m->maps, sizeof m->maps, "%s", maps);
+    return i;
+}
+
 void gen_scene_add_object(gen_scene *s, int mesh, int material, const double position[3], double rotate_y,
                           const double scale[3])
 {
@@ -116,6 +128,13 @@ static void gen_scene_write_setup(const gen_scene *s, FILE *f)
 
     for (int i = 0; i < s->material_count; i++) {
         const gen_material *m = &s->materials[i];
+        if (m->pbr) {
+            fprintf(f, "material %s pbr base ", m->name);
+            gen_format_write_vec3(m->albedo, 3, f);
+            fprintf(f, " metallic %s roughness %s%s%s\n", gen_format_number(m->metallic, 3, a),
+                    gen_format_number(m->roughness, 3, b), m->maps[0] ? " " : "", m->maps);
+            continue;
+        }
         fprintf(f, "material %s albedo ", m->name);
         gen_format_write_vec3(m->albedo, 3, f);
         fprintf(f, " specular %s shininess %s\n", gen_format_number(m->specular, 3, a),

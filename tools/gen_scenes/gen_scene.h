@@ -4,6 +4,9 @@
  *   gen_scene_add_mesh(s, name, spec, triangles)          the new mesh's index
  *   gen_scene_add_material(s, name, albedo, specular, shininess)
  *                                                         the new material's index
+ *   gen_scene_add_pbr_material(s, name, base, metallic, roughness, maps)
+ *                                                         a metallic-roughness one; maps is the rest
+ *                                                         of its line ("base_map PATH ...") or ""
  *   gen_scene_add_object(s, mesh, material, position, rotate_y, scale)
  *   gen_scene_add_light(s, r, position)                   a light of random colour and intensity
  *                                                         (0.8..1.2) drawn from r
@@ -35,8 +38,11 @@ typedef struct gen_mesh {
 
 typedef struct gen_material {
     char name[32];
-    double albedo[3];
+    double albedo[3]; /* a metallic-roughness material's base colour */
     double specular, shininess;
+    bool pbr;
+    double metallic, roughness;
+    char maps[GEN_PATH_MAX]; /* "base_map PATH normal_map PATH ...", or "" */
 } gen_material;
 
 typedef struct gen_object {
@@ -71,6 +77,8 @@ typedef struct gen_scene {
 int gen_scene_add_mesh(gen_scene *s, const char *name, const char *spec, long triangles);
 int gen_scene_add_material(gen_scene *s, const char *name, const double albedo[3], double specular,
                            double shininess);
+int gen_scene_add_pbr_material(gen_scene *s, const char *name, const double base[3], double metallic,
+                               double roughness, const char *maps);
 void gen_scene_add_object(gen_scene *s, int mesh, int material, const double position[3], double rotate_y,
                           const double scale[3]);
 void gen_scene_add_light(gen_scene *s, rng *r, const double position[3]);

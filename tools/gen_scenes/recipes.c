@@ -1,9 +1,10 @@
-/* recipes.c - the city, bunnies, sphere and teapots scenes, and writing them with their models. */
+/* recipes.c - the city, bunnies, sphere, teapots and PBR teapots scenes, and writing them with their models. */
 #include "recipes.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "gen_format.h"
 #include "gen_path.h"
@@ -17,6 +18,7 @@
 #define BUNNY_LOOP_LEVELS 2
 #define BUNNY_REFINED "bunny_loop2.ply"
 #include "mesh_data.h"
+#include "pbr_textures.h"
 #include "teapot.h"
 
 #define RECIPES_PI 3.14159265358979323846
@@ -281,6 +283,60 @@ static void recipes_build_teapots(gen_scene *s, const char *teapot_spec, int tea
     }
 }
 
+/* The same ring of teapots and the same 80 lights, in metallic-roughness materials, round a riveted
+ * metal box on a tiled floor, both textured (tools/gen_scenes/pbr_textures.c). The teapot model has no
+ * texture coordinates, so the teapots take their material's numbers alone. */
+static bool recipes_build_pbr_teapots(gen_scene *s, const char *teapot_spec, long teapot_triangles,
+                                      const char *textures_rel)
+{
+    gen_scene *kept = malloc(sizeof *kept); /* large: see gen_scene.h */
+    if (!kept) {
+        log_error("gen_scenes: out of memory");
+        return false;
+    }
+    recipes_build_teapots(kept, teapot_spec, 0, teapot_triangles); /* the places, turns and lights */
+    *s = (gen_scene){
+        .notes = {"pbr_teapots.scene - teapots.scene in metallic-roughness materials (chapter 18): the 8",
+                  "teapots in gold, copper, red plastic and blue ceramic round a riveted steel box on a",
+                  "tiled floor, both textured with the generated images of ../textures, and the 80 lights."},
+        .eye = {0, 7.5, 9.5}, .target = {0, 0.4, 0.3}, .fovy = 50, .near_plane = 0.1, .far_plane = 60,
+        .ambient = {0.05, 0.05, 0.05}, .kc = 1, .kl = 0.8, .kq = 4};
+    int teapot = gen_scene_add_mesh(s, "teapot", teapot_spec, teapot_triangles);
+    int floor_mesh = gen_scene_add_mesh(s, "floor", "plane", 2);
+    int box = gen_scene_add_mesh(s, "box", "cube", 12);
+    char maps[4 * GEN_PATH_MAX + 128]; /* four paths and their words */
+    snprintf(maps, sizeof maps,
+             "base_map %s/tiles_base.png metal_rough_map %s/tiles_mr.png normal_map %s/tiles_normal.png "
+             "occlusion_map %s/tiles_ao.png",
+             textures_rel, textures_rel, textures_rel, textures_rel);
+    int tiles = gen_scene_add_pbr_material(s, "tiles", ONE, 1, 1, maps);
+    snprintf(maps, sizeof maps,
+             "base_map %s/panel_base.png metal_rough_map %s/panel_mr.png normal_map %s/panel_normal.png "
+             "occlusion_map %s/panel_ao.png",
+             textures_rel, textures_rel, textures_rel, textures_rel);
+    int panel = gen_scene_add_pbr_material(s, "panel", ONE, 1, 1, maps);
+    static const struct {
+        const char *name;
+        double base[3], metallic, roughness;
+    } finishes[4] = {{"gold", {1.0, 0.78, 0.34}, 1, 0.35},
+                     {"red_plastic", {0.7, 0.08, 0.06}, 0, 0.3},
+                     {"copper", {0.95, 0.64, 0.54}, 1, 0.5},
+                     {"blue_ceramic", {0.15, 0.35, 0.7}, 0, 0.55}};
+    int finish[4];
+    for (int i = 0; i < 4; i++)
+        finish[i] = gen_scene_add_pbr_material(s, finishes[i].name, finishes[i].base, finishes[i].metallic,
+                                               finishes[i].roughness, "");
+    gen_scene_add_object(s, floor_mesh, tiles, (double[3]){0, 0, 0}, 0, (double[3]){24, 1, 24});
+    gen_scene_add_object(s, box, panel, (double[3]){0, 0.8, 0}, 30, (double[3]){1.6, 1.6, 1.6});
+    for (int i = 1; i < kept->object_count; i++) /* object 0 was the floor */
+        gen_scene_add_object(s, teapot, finish[(i - 1) % 4], kept->objects[i].position, kept->objects[i].rotate_y,
+                             kept->objects[i].scale);
+    memcpy(s->lights, kept->lights, sizeof kept->lights[0] * (size_t)kept->light_count);
+    s->light_count = kept->light_count;
+    free(kept);
+    return true;
+}
+
 /* ---- writing: the teapot model first, since its scene states the model's counts ---- */
 
 /* teapot.obj into models_dir; the triangle count as the loader reads it back, -1 on failure. */
@@ -335,10 +391,12 @@ static bool recipes_write_scene(const gen_scene *s, const char *dir, const char 
     return true;
 }
 
-bool recipes_write_all(const char *out_dir, const char *models_dir)
+bool recipes_write_all(const char *out_dir, const char *models_dir, const char *textures_dir)
 {
-    char models_rel[GEN_PATH_MAX], spec[GEN_PATH_MAX + 32];
-    if (!gen_path_relative(out_dir, models_dir, sizeof models_rel, models_rel)) {
+    char models_rel[GEN_PATH_MAX], textures_rel[GEN_PATH_MAX], spec[GEN_PATH_MAX + 32];
+    if (!gen_path_relative(out_dir, models_dir, sizeof models_rel, models_rel) ||
+        !gen_path_relative(out_dir, textures_dir, sizeof textures_rel, textures_rel) ||
+        !pbr_textures_write(textures_dir)) {
         return false;
     }
     int teapot_vertices = 0;
@@ -361,6 +419,8 @@ bool recipes_write_all(const char *out_dir, const char *models_dir)
     snprintf(spec, sizeof spec, "file %s/teapot.obj", models_rel);
     recipes_build_teapots(s, spec, teapot_vertices, teapot_triangles);
     ok = ok && recipes_write_scene(s, out_dir, "teapots.scene");
+    ok = ok && recipes_build_pbr_teapots(s, spec, teapot_triangles, textures_rel) &&
+         recipes_write_scene(s, out_dir, "pbr_teapots.scene");
     free(s);
     return ok;
 }

@@ -1,8 +1,11 @@
-/* recipes.h - the four benchmark scenes and the teapot model they need.
+/* recipes.h - the four benchmark scenes, the textured PBR teapots, and the model and images they need.
  *
- *   recipes_write_all(out_dir, models_dir)   teapot.obj into models_dir, then city.scene,
- *                                            bunnies.scene, sphere.scene and teapots.scene into
- *                                            out_dir, naming their models relative to out_dir
+ *   recipes_write_all(out_dir, models_dir, textures_dir)
+ *                                            teapot.obj into models_dir, the PBR scene's images into
+ *                                            textures_dir (pbr_textures.h), then city.scene,
+ *                                            bunnies.scene, sphere.scene, teapots.scene and
+ *                                            pbr_teapots.scene into out_dir, naming their models and
+ *                                            images relative to out_dir
  *
  * The scenes rebuild, in spirit, the test scenes of published deferred-shading results (a city
  * of cubes, a field of bunnies, one dense sphere, a table of teapots). Each draws from its own
@@ -18,6 +21,6 @@
 
 #include <stdbool.h>
 
-bool recipes_write_all(const char *out_dir, const char *models_dir);
+bool recipes_write_all(const char *out_dir, const char *models_dir, const char *textures_dir);
 
 #endif

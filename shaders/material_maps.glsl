@@ -1,0 +1,53 @@
+// material_maps.glsl - a metallic-roughness material's images (chapter 18, docs/18_pbr_materials.md),
+// applied where a surface is first known: forward.frag, forward_plus.frag and gbuffer.frag, after
+// forward.vert. Include after "shading.glsl". A Blinn-Phong material, and a metallic-roughness one
+// without maps, comes back exactly as given.
+#ifndef MATERIAL_MAPS_GLSL
+#define MATERIAL_MAPS_GLSL
+
+uniform sampler2DArray u_maps_srgb;   // base colour, emissive: GL_SRGB8_ALPHA8, sampled as linear values
+uniform sampler2DArray u_maps_linear; // metal-rough, normal, occlusion: GL_RGBA8, sampled as stored
+
+in vec2 v_uv;
+in vec4 v_tangent;
+flat in vec4 v_maps;     // layers: base, metal-rough, normal, occlusion; -1 for none
+flat in vec4 v_emissive; // emissive rgb, its map's layer
+
+// A normal-map texel (0..1 per channel) to a world-space normal. The tangent is made perpendicular to
+// n here (interpolation bends it); a texel that decodes below the surface (z <= 0, such as (0, 0, 0),
+// which a broken or blank map holds) keeps the surface's own normal instead.
+vec3 material_normal_from_map(vec3 n, vec4 tangent, vec3 texel)
+{
+    vec3 m = texel * 2.0 - 1.0;
+    if (m.z <= 1e-3)
+        return n;
+    vec3 t = safe_normalize(tangent.xyz - n * dot(n, tangent.xyz), vec3(0.0));
+    if (t == vec3(0.0))
+        return n; // no usable tangent: the map cannot be oriented
+    vec3 b = (tangent.w < 0.0 ? -1.0 : 1.0) * cross(n, t);
+    return safe_normalize(m.x * t + m.y * b + m.z * n, n);
+}
+
+// The maps times the material's factors, as glTF 2.0 defines them: base colour times the base map,
+// roughness times the map's G, metallic times its B; the normal from the normal map; occlusion from
+// the occlusion map's R (1 without one).
+void material_apply_maps(inout vec3 albedo, inout float specular, inout float shininess, inout vec3 n,
+                         out float occlusion)
+{
+    occlusion = 1.0;
+    if (!material_is_pbr(shininess))
+        return;
+    if (v_maps.x >= 0.0)
+        albedo *= texture(u_maps_srgb, vec3(v_uv, v_maps.x)).rgb;
+    if (v_maps.y >= 0.0) {
+        vec4 mr = texture(u_maps_linear, vec3(v_uv, v_maps.y));
+        specular *= mr.b;
+        shininess = -1.0 - (-1.0 - shininess) * mr.g;
+    }
+    if (v_maps.z >= 0.0)
+        n = material_normal_from_map(n, v_tangent, texture(u_maps_linear, vec3(v_uv, v_maps.z)).rgb);
+    if (v_maps.w >= 0.0)
+        occlusion = texture(u_maps_linear, vec3(v_uv, v_maps.w)).r;
+}
+
+#endif

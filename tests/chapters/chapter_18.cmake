@@ -1,0 +1,70 @@
+# Chapter 18 (textured metallic-roughness materials on chapter 11's clustered deferred frame): the
+# pictures its page shows (the lit frame and the G-buffer's channel views), the claim "every renderer
+# shades a metallic-roughness material the same way" (each deferred chapter against forward on the
+# generated PBR scene), and the hard cases of docs/hard-cases.md that need a picture.
+#
+# Agreement bound: 1/255 on 99.99 % of pixels, as for chapter 11; measured on the PBR teapots at
+# 320 x 240: 4 pixels of 76,800 beyond it (0.0052 %, max 3/255), the G-buffer's half-float normal
+# against the rasteriser's on the teapots' rims.
+
+function(chapter_18_tests)
+  set(A ${CMAKE_SOURCE_DIR}/assets/scenes)
+  set(P ${CMAKE_SOURCE_DIR}/tests/scenes/pbr)
+  set(C 18_pbr_materials)
+  if(NOT TARGET ${C})
+    return()
+  endif()
+  set(PBR --scene ${A}/pbr_teapots.scene)
+
+  # The pictures the page shows: the lit frame and each channel of the G-buffer.
+  course_golden_test(18_pbr_teapots ${C} 1 0.0001 ${PBR})
+  foreach(view albedo metallic roughness normal occlusion depth)
+    course_golden_test(18_pbr_${view} ${C} 1 0.0001 ${PBR} --view ${view})
+  endforeach()
+  course_golden_test(18_pbr_exposure4 ${C} 1 0.0001 ${PBR} --exposure 4)
+
+  # Every renderer shades them the same way: chapter 18's deferred frame, Forward+, and the deferred
+  # chapters that draw opaque surfaces (03 full-screen, 06 summed volumes, 07 culled volumes, 10 tiles,
+  # 11 clusters, 14 unshadowed, 17 with SSAO off) against forward. (04 and 05 overwrite, on purpose.)
+  course_agreement_test(18_vs_forward 1 0.0001 ${C} ${PBR} VS ${C} --renderer forward ${PBR})
+  course_agreement_test(18_vs_forward_plus 1 0.0001 ${C} ${PBR} VS ${C} --renderer forward-plus ${PBR})
+  foreach(other 03_fullscreen_phong 06_additive_blending 07_face_culling 10_tiled_deferred 11_clustered)
+    if(TARGET ${other})
+      course_agreement_test(18_${other}_vs_forward 1 0.0001 ${other} ${PBR} VS 00_forward ${PBR})
+    endif()
+  endforeach()
+  course_agreement_test(18_14_unshadowed_vs_forward 1 0.0001 14_shadows --shadows 0 ${PBR} VS 00_forward ${PBR})
+  course_agreement_test(18_17_off_vs_forward 1 0.0001 17_ssao --ssao off ${PBR} VS 00_forward ${PBR})
+  # At exposure 1 the present pass changes nothing: chapter 11's picture to the byte.
+  course_agreement_test(18_is_11 0 0 ${C} ${PBR} VS 11_clustered ${PBR})
+
+  # Hard cases (docs/hard-cases.md): roughness 0 and 1, a black metal, a grazing floor; a (0, 0, 0)
+  # normal map (exactly the picture without it); a model without texture coordinates and a degenerate
+  # UV quad; an 8k checker on a 320 x 240 frame (its mipmaps: the flat grey of its average).
+  course_agreement_test(18_hard_extremes 1 0.0001 ${C} --scene ${P}/extremes.scene VS ${C} --renderer forward
+    --scene ${P}/extremes.scene)
+  course_agreement_test(18_hard_normal_zero 0 0 ${C} --scene ${P}/normal_zero.scene VS ${C} --scene ${P}/normal_none.scene)
+  course_agreement_test(18_hard_missing_uv 1 0.0001 ${C} --scene ${P}/missing_uv.scene VS ${C} --renderer forward
+    --scene ${P}/missing_uv.scene)
+  # Mipmaps: measured max 3/255 between the checker's trilinear average and the flat grey (mean 0.52);
+  # without mipmaps each pixel would pick one black or white texel, 60 levels and more away.
+  course_agreement_test(18_hard_mips_8k 4 0.0001 ${C} --scene ${P}/mips_checker_8k.scene VS ${C}
+    --scene ${P}/mips_grey_188.scene)
+  foreach(name extremes normal_zero missing_uv mips_8k)
+    set_tests_properties(agree.18_hard_${name} PROPERTIES LABELS "golden;hard")
+  endforeach()
+
+  # The light pre-pass cannot sum a metallic-roughness highlight: refused, exit 2, with why.
+  if(TARGET 15_light_prepass)
+    add_test(NAME chapters.18_prepass_refuses COMMAND 15_light_prepass --headless --frames 1 ${PBR}
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(chapters.18_prepass_refuses PROPERTIES LABELS golden
+      PASS_REGULAR_EXPRESSION "is metallic-roughness; a light pre-pass sums Blinn-Phong terms only")
+  endif()
+  # A fixed-point G-buffer cannot hold these materials: refused, exit 2.
+  add_test(NAME chapters.18_compact_refused COMMAND ${C} --headless --frames 1 --gbuffer compact ${PBR}
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.18_compact_refused PROPERTIES LABELS golden
+    PASS_REGULAR_EXPRESSION "G-buffer layout compact cannot hold the scene's metallic-roughness materials")
+endfunction()
+chapter_18_tests()
