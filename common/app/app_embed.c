@@ -3,6 +3,7 @@
 
 #include "app_internal.h"
 #include "exit_code.h"
+#include "gbuffer.h"
 #include "gl_util.h"
 #include "log.h"
 
@@ -94,7 +95,10 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
         a->scene = *gs->src; /* a view of the caller's scene: never destroyed here */
         a->gs = *gs;
         a->query = gl_query_create();
-        ok = (!desc->accepts_scene || desc->accepts_scene(a)) && app_target_make(a) &&
+        /* --gbuffer as the runner takes it: the layout of every G-buffer made from here on */
+        const gbuffer_layout *layout = e->opt.gbuffer ? gbuffer_layout_find(e->opt.gbuffer) : NULL;
+        ok = (!layout || gbuffer_set_default_layout(layout)) &&
+             (!desc->accepts_scene || desc->accepts_scene(a)) && app_target_make(a) &&
              (!desc->init || (e->have_init = desc->init(a)));
     }
     if (!ok) {

@@ -1,6 +1,7 @@
 /* gl_util.c - see gl_util.h. */
 #include "gl_util.h"
 
+#include "draw_count.h"
 #include "log.h"
 
 #include <stdlib.h>
@@ -103,7 +104,9 @@ void gl_draw_fullscreen(void)
     if (!state.fullscreen_vao)
         state.fullscreen_vao = gl_vertex_array_create();
     glBindVertexArray(state.fullscreen_vao);
+    draw_count_draw_begin();
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    draw_count_draw_end();
 }
 
 /* glStencilOpSeparate for one face; a triple left out of the literal ({0, 0, 0}) keeps the value
@@ -215,8 +218,10 @@ void gl_read_depth(GLuint framebuffer, int width, int height, float *out)
 
 void gl_samples_begin(GLuint query, bool on)
 {
-    if (on)
-        glBeginQuery(GL_SAMPLES_PASSED, query);
+    if (!on)
+        return;
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    draw_count_outer_begin(query); /* a counted draw inside suspends it (draw_count.h) */
 }
 
 long gl_samples_end(GLuint query, bool on)
@@ -226,7 +231,7 @@ long gl_samples_end(GLuint query, bool on)
     glEndQuery(GL_SAMPLES_PASSED);
     GLuint samples = 0;
     glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
-    return (long)samples;
+    return (long)samples + draw_count_outer_end();
 }
 
 void gl_util_shutdown(void) { gl_vertex_array_destroy(&state.fullscreen_vao); }
