@@ -15,23 +15,6 @@ static struct {
     bool in_draw;
 } state;
 
-bool draw_count_begin(draw_counts *out)
-{
-    if (state.out) {
-        log_error("draw_count_begin: already counting");
-        return false;
-    }
-    memset(out, 0, sizeof *out);
-    state.query = gl_query_create();
-    state.out = out;
-    return gl_check("draw_count_begin");
-}
-
-void draw_count_end(void)
-{
-    gl_query_destroy(&state.query);
-    state.out = NULL;
-}
 
 /* Bits of the unmasked channels of colour attachment `buffer` of the draw framebuffer. */
 static int colour_bits(GLenum buffer, const GLboolean mask[4])
@@ -142,12 +125,12 @@ static int fetch_bits(void)
 
 static struct {
     int written_bits, blend_bits, fetch_bits, target_samples;
+    long long every_pixel; /* > 0: the fragments that run whatever passes (draw_begin) */
 } draw;
 
-void draw_count_draw_begin(void)
+static void begin_counted_draw(void)
 {
-    if (!state.out || state.in_draw)
-        return;
+    draw.every_pixel = 0;
     state.in_draw = true;
     if (state.outer) { /* one GL_SAMPLES_PASSED query at a time: the outer one's count so far */
         glEndQuery(GL_SAMPLES_PASSED);
@@ -161,6 +144,26 @@ void draw_count_draw_begin(void)
     glGetIntegerv(GL_SAMPLES, &samples); /* of the draw framebuffer */
     draw.target_samples = samples > 0 ? samples : 1;
     glBeginQuery(GL_SAMPLES_PASSED, state.query);
+}
+
+static void draw_begin(bool fullscreen)
+{
+    if (!state.out || state.in_draw)
+        return;
+    begin_counted_draw();
+    if (!fullscreen)
+        return;
+    /* Without a depth or stencil test that can reject, every pixel of the viewport runs the shader,
+     * and fetches, even where it then discards (GL_SAMPLES_PASSED counts only the fragments kept). */
+    GLint viewport[4] = {0}, depth_func = GL_ALWAYS, stencil_func = GL_ALWAYS, stencil_back = GL_ALWAYS;
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetIntegerv(GL_DEPTH_FUNC, &depth_func);
+    glGetIntegerv(GL_STENCIL_FUNC, &stencil_func);
+    glGetIntegerv(GL_STENCIL_BACK_FUNC, &stencil_back);
+    const bool depth_rejects = glIsEnabled(GL_DEPTH_TEST) && depth_func != GL_ALWAYS;
+    const bool stencil_rejects = glIsEnabled(GL_STENCIL_TEST) && (stencil_func != GL_ALWAYS || stencil_back != GL_ALWAYS);
+    if (!depth_rejects && !stencil_rejects)
+        draw.every_pixel = (long long)viewport[2] * viewport[3];
 }
 
 static draw_count_pass *current_pass(void)
@@ -178,7 +181,7 @@ static draw_count_pass *current_pass(void)
     return &c->passes[c->count++];
 }
 
-void draw_count_draw_end(void)
+static void draw_end(void)
 {
     if (!state.out || !state.in_draw)
         return;
@@ -191,23 +194,46 @@ void draw_count_draw_end(void)
     p->draws++;
     p->samples += s;
     p->written += s * draw.written_bits / 8;
-    p->read += s * draw.blend_bits / 8 + s / draw.target_samples * draw.fetch_bits / 8;
+    const long long fragments = draw.every_pixel > 0 ? draw.every_pixel : s / draw.target_samples;
+    p->read += (s * draw.blend_bits + fragments * draw.fetch_bits) / 8;
     if (state.outer) { /* the outer query counts this draw too, then goes on */
         state.outer_missed += (long)samples;
         glBeginQuery(GL_SAMPLES_PASSED, state.outer);
     }
 }
 
-void draw_count_outer_begin(GLuint query)
+static void outer_begin(GLuint query)
 {
     state.outer = query;
     state.outer_missed = 0;
 }
 
-long draw_count_outer_end(void)
+static long outer_end(void)
 {
     long missed = state.outer_missed;
     state.outer = 0;
     state.outer_missed = 0;
     return missed;
+}
+
+static const gl_draw_hooks hooks = {draw_begin, draw_end, outer_begin, outer_end};
+
+bool draw_count_begin(draw_counts *out)
+{
+    if (state.out) {
+        log_error("draw_count_begin: already counting");
+        return false;
+    }
+    memset(out, 0, sizeof *out);
+    state.query = gl_query_create();
+    state.out = out;
+    gl_draw_hooks_set(&hooks);
+    return gl_check("draw_count_begin");
+}
+
+void draw_count_end(void)
+{
+    gl_draw_hooks_set(NULL);
+    gl_query_destroy(&state.query);
+    state.out = NULL;
 }

@@ -7,22 +7,22 @@
  *            stencil's bits when the stencil test is on, with a non-zero write mask and a depth-pass
  *            operation other than GL_KEEP
  *   read     every 2D texture the draw's program samples (sampler2D, sampler2DMS, integer ones),
- *            its texel's bits times its samples, once per fragment (samples passed / the target's
- *            samples); and the colour bytes blending reads back, per sample
+ *            its texel's bits times its samples, once per fragment the shader ran: a full-screen
+ *            draw without a depth or stencil test that can fail runs it on every pixel of the viewport (those that
+ *            discard included); any other draw on its samples passed / the target's samples; and
+ *            the colour bytes blending reads back, per sample
  * Summed per pass: the pass frame_timer_mark() named last (frame_timer.h), "(no pass)" before any.
- * Not counted: depth-test reads, compute passes (they write per cluster, not per pixel), texture
- * buffers (scene data, not per-pixel storage) and blits. Texture reads are an upper bound where a
+ * Not counted: clears, depth-test reads, compute passes (they write per cluster, not per pixel),
+ * texture buffers (scene data, not per-pixel storage) and blits; the fetches of fragments that
+ * discard in a draw with a depth or stencil test. Texture reads are an upper bound where a
  * shader returns early (a background pixel that reads only its depth counts every texture).
  * Counting syncs on every query: count in frames that are not timed.
  *
- *   draw_count_begin(out)        counting on, into *out (zeroed); false (logged) when already on
- *   draw_count_end()             counting off; *out holds the frame's passes
- *   draw_count_draw_begin()      before a draw (mesh.c, gl_util.c call them); no-op when off
- *   draw_count_draw_end()        after it
- *   draw_count_outer_begin(query)
- *   draw_count_outer_end()       gl_samples_begin/end call them: a draw counted inside another
- *                                GL_SAMPLES_PASSED query (GL allows one at a time) suspends it, and
- *                                outer_end returns the samples the outer query missed meanwhile
+ *   draw_count_begin(out)        counting on, into *out (zeroed): installs gl_util's draw hooks
+ *                                (gl_draw_hooks_set); false (logged) when already on
+ *   draw_count_end()             counting off, the hooks removed; *out holds the frame's passes
+ * A draw counted inside another GL_SAMPLES_PASSED query (gl_samples_begin/end; GL allows one at a
+ * time) suspends that query, and its samples are added back to the query's result at its end.
  */
 #ifndef COMMON_DRAW_COUNT_H
 #define COMMON_DRAW_COUNT_H
@@ -47,9 +47,5 @@ typedef struct draw_counts {
 
 bool draw_count_begin(draw_counts *out);
 void draw_count_end(void);
-void draw_count_draw_begin(void);
-void draw_count_draw_end(void);
-void draw_count_outer_begin(GLuint query);
-long draw_count_outer_end(void);
 
 #endif

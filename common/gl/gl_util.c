@@ -1,7 +1,6 @@
 /* gl_util.c - see gl_util.h. */
 #include "gl_util.h"
 
-#include "draw_count.h"
 #include "log.h"
 
 #include <stdlib.h>
@@ -11,6 +10,7 @@ static struct {
     long live_objects;
     long errors;
     GLuint fullscreen_vao;
+    const gl_draw_hooks *hooks;
 } state;
 
 #define COUNTED_PAIR(kind, gen, del)                                                                         \
@@ -104,9 +104,9 @@ void gl_draw_fullscreen(void)
     if (!state.fullscreen_vao)
         state.fullscreen_vao = gl_vertex_array_create();
     glBindVertexArray(state.fullscreen_vao);
-    draw_count_draw_begin();
+    gl_draw_hooks_begin(true);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    draw_count_draw_end();
+    gl_draw_hooks_end();
 }
 
 /* glStencilOpSeparate for one face; a triple left out of the literal ({0, 0, 0}) keeps the value
@@ -221,7 +221,8 @@ void gl_samples_begin(GLuint query, bool on)
     if (!on)
         return;
     glBeginQuery(GL_SAMPLES_PASSED, query);
-    draw_count_outer_begin(query); /* a counted draw inside suspends it (draw_count.h) */
+    if (state.hooks)
+        state.hooks->samples_begin(query); /* a counted draw inside suspends it (draw_count.h) */
 }
 
 long gl_samples_end(GLuint query, bool on)
@@ -231,7 +232,21 @@ long gl_samples_end(GLuint query, bool on)
     glEndQuery(GL_SAMPLES_PASSED);
     GLuint samples = 0;
     glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
-    return (long)samples + draw_count_outer_end();
+    return (long)samples + (state.hooks ? state.hooks->samples_end() : 0);
+}
+
+void gl_draw_hooks_set(const gl_draw_hooks *hooks) { state.hooks = hooks; }
+
+void gl_draw_hooks_begin(bool fullscreen)
+{
+    if (state.hooks)
+        state.hooks->draw_begin(fullscreen);
+}
+
+void gl_draw_hooks_end(void)
+{
+    if (state.hooks)
+        state.hooks->draw_end();
 }
 
 void gl_util_shutdown(void) { gl_vertex_array_destroy(&state.fullscreen_vao); }

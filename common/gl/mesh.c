@@ -1,7 +1,6 @@
 /* mesh.c - see mesh.h. */
 #include "mesh.h"
 
-#include "draw_count.h"
 #include "gl_util.h"
 
 #include <string.h>
@@ -42,15 +41,15 @@ void mesh_destroy(mesh *m)
 void mesh_draw(const mesh *m)
 {
     glBindVertexArray(m->vao);
-    draw_count_draw_begin();
+    gl_draw_hooks_begin(false);
     glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
-    draw_count_draw_end();
+    gl_draw_hooks_end();
 }
 
 void mesh_draw_instanced(const mesh *m, int instances)
 {
     glBindVertexArray(m->vao);
-    draw_count_draw_begin(); /* no-op unless the benchmark counts bytes (draw_count.h) */
+    gl_draw_hooks_begin(false); /* nothing unless the benchmark counts bytes (draw_count.h) */
     glDrawElementsInstanced(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0, instances);
-    draw_count_draw_end();
+    gl_draw_hooks_end();
 }

@@ -28,8 +28,8 @@ bench_storage_results bench_storage_results_now;
 #define ARGS(...) {__VA_ARGS__, NULL}
 
 /* The rows: a chapter and its arguments at 1 sample, and at 4 where the course has a variant
- * (chapter 13 draws forward, Forward+ and the G-buffer multisampled; the light pre-pass and the
- * visibility buffer have none). `first` is the pass that stores what the row stores per pixel. */
+ * (chapter 13 draws forward, Forward+ and the G-buffer multisampled, chapter 16 its ids; the light
+ * pre-pass has none). `first` is the pass that stores what the row stores per pixel. */
 const storage_renderer bench_storage_renderers[STORAGE_RENDERERS] = {
     {"forward", "depth pre-pass",
      {{&chapter_00, ARGS("--renderer", "forward")}, {&chapter_13, ARGS("--renderer", "forward", "--samples", "4")}}},
@@ -44,15 +44,18 @@ const storage_renderer bench_storage_renderers[STORAGE_RENDERERS] = {
       {&chapter_13, ARGS("--renderer", "deferred", "--gbuffer", "reference", "--samples", "4")}}},
     {"light-prepass-rgb", "thin pass", {{&chapter_15, ARGS("--renderer", "deferred", "--specular", "rgb")}, {0}}},
     {"light-prepass-mono", "thin pass", {{&chapter_15, ARGS("--renderer", "deferred", "--specular", "mono")}, {0}}},
-    {"visibility-buffer", "visibility pass", {{&chapter_16, ARGS("--renderer", "deferred")}, {0}}},
+    {"visibility-buffer", "visibility pass",
+     {{&chapter_16, ARGS("--renderer", "deferred")}, {&chapter_16, ARGS("--renderer", "deferred", "--samples", "4")}}},
 };
 
 const char *const bench_storage_scene_names[STORAGE_SCENES] = {"default", "city", "bunnies", "teapots"};
 const int bench_storage_samples[STORAGE_SAMPLE_COUNTS] = {1, 4};
 
-/* What visibility_shade.frag fetches from buffers for a covered pixel, besides its id: the object's
- * SHADER_OBJECT_TEXELS RGBA32F texels (matrices, material), and per corner the object's mesh offsets
- * (RG32I), one index (R32UI) and the vertex's SHADER_MESH_VERTEX_FLOATS floats (R32F). */
+/* What visibility_shade.frag fetches from buffers per triangle it shades, besides the ids: the
+ * object's SHADER_OBJECT_TEXELS RGBA32F texels (matrices, material), and per corner the object's
+ * mesh offsets (RG32I), one index (R32UI) and the vertex's SHADER_MESH_VERTEX_FLOATS floats (R32F).
+ * Its "shading" pass shades one triangle per fragment that passes (it discards the background), its
+ * "shading edges" pass (MSAA) at most one per sample. */
 const int bench_storage_vis_scene_bytes =
     SHADER_OBJECT_TEXELS * 16 + 3 * (8 + 4 + SHADER_MESH_VERTEX_FLOATS * 4);
 
@@ -163,7 +166,7 @@ static bool time_row(app_embed *e, const bench_options *o, const gpu_scene *gs, 
 }
 
 /* One untimed frame with every draw counted, its passes named by a frame timer. */
-static bool count_row(app_embed *e, const gpu_scene *gs, float *depth, storage_row *row)
+static bool count_row(app_embed *e, const gpu_scene *gs, storage_row *row)
 {
     frame_timer t;
     draw_counts c;
@@ -186,13 +189,11 @@ static bool count_row(app_embed *e, const gpu_scene *gs, float *depth, storage_r
         row->written_per_px += p->written_per_px;
         row->read_per_px += p->read_per_px;
     }
-    /* The visibility buffer's shading pass fetches its triangle per covered pixel (its depth is the
-     * target's: the ids' depth attachment is shared). */
-    if (ok && strcmp(row->renderer, "visibility-buffer") == 0 && fbo_read_depth(app_embed_target(e), depth)) {
-        long covered = 0;
-        for (size_t i = 0; i < (size_t)pixels; i++)
-            covered += depth[i] < 1.0f;
-        row->scene_read_per_px = (double)covered * bench_storage_vis_scene_bytes / pixels;
+    if (ok && strcmp(row->renderer, "visibility-buffer") == 0) {
+        const storage_pass *once = bench_storage_find_pass(row, "shading"),
+                           *edges = bench_storage_find_pass(row, "shading edges");
+        row->scene_read_per_px = bench_storage_vis_scene_bytes *
+                                 ((once ? once->samples_per_px : 0.0) + (edges ? edges->samples_per_px * row->samples : 0.0));
     }
     return ok && gl_check("bench_storage count");
 }
@@ -265,7 +266,7 @@ static bool run_row(const bench_options *o, int si, int ri, int k, const gpu_sce
         gbuffer_set_default_layout(layout);
         return gl_check("bench_storage open");
     }
-    bool ok = time_row(e, o, gs, row) && count_row(e, gs, m->depth, row) && error_row(e, m, row);
+    bool ok = time_row(e, o, gs, row) && count_row(e, gs, row) && error_row(e, m, row);
     app_embed_close(e);
     gbuffer_set_default_layout(layout);
     row->measured = ok;

@@ -191,8 +191,9 @@ void bench_storage_write_md(FILE *f, const bench_state *st)
             "pixels. Depth-test reads, compute passes and blits are not counted. *Stores B/sample*: the "
             "first pass's bytes over its samples (what one visible sample keeps, depth included). *Writes* "
             "and *reads*: every pass, overdraw included. *Scene data*: the visibility buffer's shading pass "
-            "fetches, per covered pixel, its triangle's indices and vertices and its object's matrices "
-            "(%d bytes, from visibility_shade.frag), from buffers that the caches share between pixels. "
+            "fetches, per triangle it shades, the triangle's indices and vertices and its object's matrices "
+            "(%d bytes, from visibility_shade.frag), from buffers that the caches share between pixels: one "
+            "triangle per covered pixel, and at 4 samples at most one per sample of an edge pixel. "
             "8-bit error: against the exact reference (forward, fp32, cut-off 0); at 4 samples against the "
             "exact 4-sample picture (chapter 13's forward MSAA at cut-off 0), so that antialiasing is not "
             "counted as error.\n",
