@@ -179,6 +179,8 @@ static void write_targets(FILE *f)
 void bench_storage_write_md(FILE *f, const bench_state *st)
 {
     const bench_options *o = &st->opt;
+    if (!R.ran)
+        return; /* --gbuffer-sweep only */
     fprintf(f,
             "\n## What to store per pixel\n\n"
             "Each renderer is its chapter, opened with its arguments (chapters 00, 11, 13, 15, 16), on each "

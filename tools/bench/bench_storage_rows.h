@@ -53,6 +53,7 @@ typedef struct bench_storage_results {
     bool scene_done[STORAGE_SCENES];
     int scene_lights[STORAGE_SCENES];
     const char *pass_clock;
+    bool ran; /* bench_storage_run was called: the report has a section */
 } bench_storage_results;
 
 extern bench_storage_results bench_storage_results_now;
