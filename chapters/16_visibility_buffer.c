@@ -18,8 +18,13 @@
  *      vertices (vis_meshes.c: every mesh's buffers copied into texture buffers), intersects its ray
  *      with the triangle for the barycentrics, interpolates position and normal, and loops over its
  *      cluster's lights
+ * --samples N (MSAA; compare with chapter 13, whose forward MSAA it matches): the ids and their own
+ * depth hold N samples a pixel (4 + 4 bytes a sample, the picture's depth is not written); the
+ * shading pass runs twice, "shading" for the pixels whose samples hold one id (once, as above),
+ * "shading edges" for the others (each sample's triangle shaded where forward MSAA shades it, the
+ * samples averaged in linear radiance before the display encoding).
  * Views: lit; ids, a colour per id (hashed). Glass (chapter 12) is not drawn: the ids hold one
- * surface a pixel.
+ * surface a sample.
  * Read docs/16_visibility_buffer.md alongside.
  */
 #include "app.h"
@@ -31,6 +36,10 @@
 #include "log.h"
 #include "vis_meshes.h"
 
+#include <stdio.h>
+
+#define VIS_MAX_SAMPLES 32
+
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const views[] = {"lit", "ids", NULL};
 
@@ -41,6 +50,8 @@ static const cli_desc cli = {
                "fetches the triangle, rebuilds the surface and shades with chapter 11's cluster lists.",
     .renderers = renderers,
     .views = views,
+    .extras = {{"samples", "N", "ids per sample: N samples per pixel, edge pixels shaded per sample (1: no MSAA)",
+                NULL, "1", CLI_POWER_OF_TWO, 1, VIS_MAX_SAMPLES}},
 };
 
 /* 1. visibility pass: chapter 00's pre-pass state (GL_LEQUAL: on a tie the object drawn last wins). */
@@ -52,8 +63,11 @@ static const gl_pass_state shading_pass = {.depth_write = false};
 #define VIS_MAX_TRIANGLES (1L << SHADER_VIS_TRIANGLE_BITS)
 #define VIS_MAX_OBJECTS ((1L << (32 - SHADER_VIS_TRIANGLE_BITS)) - 1)
 
+enum { VIS_PASS_PIXELS, VIS_PASS_EDGES }; /* visibility_shade.frag's u_pass (MSAA only) */
+
 static struct {
-    fbo ids; /* R32UI ids; depth: a->target's */
+    int samples;
+    fbo ids; /* R32UI ids; depth: a->target's (MSAA: its own, multisampled) */
     vis_meshes meshes;
     clusters c;
     GLuint visibility_program, shading_program;
@@ -95,22 +109,33 @@ static bool accepts_scene(const app *a)
 static bool init(app *a)
 {
     a->pass_state = &shading_pass; /* the overlay shows it */
+    double n = 1;
+    if (!app_extra_number(a, "samples", 1, VIS_MAX_SAMPLES, &n) ||
+        !fbo_samples_supported((int)n, VIS_MAX_SAMPLES, "16_visibility_buffer: bad --samples"))
+        return !(a->input_error = true);
+    state.samples = (int)n;
+    char defines[32];
+    snprintf(defines, sizeof defines, "VIS_SAMPLES %d", state.samples);
     const clusters_desc lists = {.compute = gl_have_compute()}; /* chapter 11's default */
     state.visibility_program = gl_program_load("forward.vert", "visibility.frag", NULL);
-    state.shading_program = gl_program_load("fullscreen.vert", "visibility_shade.frag", NULL);
+    state.shading_program =
+        gl_program_load("fullscreen.vert", "visibility_shade.frag", state.samples > 1 ? defines : NULL);
     return state.visibility_program && state.shading_program && vis_meshes_create(&state.meshes, &a->gs) &&
            clusters_create(&state.c, &lists);
 }
 
-/* The id target on the picture's depth texture: made when missing, remade when either changed. */
+/* The id target on the picture's depth texture (MSAA: on its own): made when missing, remade when
+ * either changed. */
 static bool targets_follow(const app *a)
 {
     const fbo *t = &a->target;
-    if (state.ids.id && state.ids.depth == t->depth && state.ids.width == t->width && state.ids.height == t->height)
+    const bool msaa = state.samples > 1;
+    if (state.ids.id && (msaa || state.ids.depth == t->depth) && state.ids.width == t->width &&
+        state.ids.height == t->height)
         return true;
     fbo_destroy(&state.ids);
     const fbo_desc ids = {.color_formats = {GL_R32UI}, .color_count = 1, .depth_format = GL_DEPTH_COMPONENT32F,
-                          .shared_depth = t->depth, .name = "visibility buffer"};
+                          .shared_depth = msaa ? 0 : t->depth, .samples = state.samples, .name = "visibility buffer"};
     return fbo_create(&state.ids, &ids, t->width, t->height);
 }
 
@@ -133,7 +158,8 @@ static bool draw_visibility(const gpu_scene *gs)
     return gl_check("16 visibility pass");
 }
 
-/* 3. shading: per pixel, its triangle rebuilt from the id and its cluster's lights. */
+/* 3. shading: per pixel, its triangle rebuilt from the id and its cluster's lights; the background
+ * is the clear colour (the shader discards it). MSAA: the pixels of one id, then the edges. */
 static bool shade(app *a)
 {
     const GLuint p = state.shading_program;
@@ -142,18 +168,26 @@ static bool shade(app *a)
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
     gl_pass_state_apply(&shading_pass);
+    glClearColor(0, 0, 0, 1); /* forward's background */
+    glClear(GL_COLOR_BUFFER_BIT);
     clusters_use(&state.c, gs, p, a->linear_output ? CLUSTERS_VIEW_LINEAR : CLUSTERS_VIEW_LIT);
     gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS);
     vis_meshes_bind(&state.meshes, p, SHADER_UNIT_VIS_MESHES);
     glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_GBUFFER);
-    glBindTexture(GL_TEXTURE_2D, state.ids.color[0]);
+    glBindTexture(state.samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, state.ids.color[0]);
     glActiveTexture(GL_TEXTURE0);
     glUniform1i(glGetUniformLocation(p, "u_ids"), SHADER_UNIT_GBUFFER);
     glUniformMatrix4fv(glGetUniformLocation(p, "u_inv_view_proj"), 1, GL_FALSE, (const float *)gs->view.inv_view_proj);
     glUniform2f(glGetUniformLocation(p, "u_viewport_size"), (float)a->width, (float)a->height);
     glUniform1i(glGetUniformLocation(p, "u_show_ids"), app_view_is(a, "ids"));
+    glUniform1i(glGetUniformLocation(p, "u_pass"), VIS_PASS_PIXELS);
     gl_samples_begin(a->query, a->count_pixels);
     gl_draw_fullscreen();
+    if (state.samples > 1) {
+        frame_timer_mark("shading edges");
+        glUniform1i(glGetUniformLocation(p, "u_pass"), VIS_PASS_EDGES);
+        gl_draw_fullscreen();
+    }
     a->shaded_pixels = gl_samples_end(a->query, a->count_pixels);
     gl_pass_state_reset();
     return gl_check("16 shading");

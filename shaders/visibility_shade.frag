@@ -4,12 +4,27 @@
 // them in the world with the object's matrices, intersects the pixel's ray from the eye with the
 // triangle (Moller-Trumbore: the barycentrics of the hit, perspective-correct by construction),
 // interpolates position and normal as the rasterizer would have, and shades with chapter 11's
-// cluster lists. u_show_ids: a colour per id instead (hashed).
+// cluster lists. u_show_ids: a colour per id instead (hashed). The background (id 0) is discarded:
+// the chapter clears the picture to it first, so the pass's GL_SAMPLES_PASSED counts the pixels
+// that fetch a triangle.
+// VIS_SAMPLES N (--samples N): the ids hold N samples a pixel. Drawn twice: u_pass VIS_PASS_PIXELS
+// shades the pixels whose samples all hold one id, once, as above; VIS_PASS_EDGES the others, each
+// sample's triangle where the pixel centre's ray meets its plane (where forward MSAA runs a
+// primitive's fragment: its attributes extrapolated to the centre), the samples' radiance averaged
+// before the display encoding (chapter 13's resolve). Each pass discards the other's pixels.
+// variants: - | VIS_SAMPLES 4
 #include "shading.glsl"
 #include "heat.glsl"
 #include "clusters.glsl"
 
+#ifdef VIS_SAMPLES
+#define VIS_PASS_PIXELS 0
+#define VIS_PASS_EDGES 1
+uniform usampler2DMS u_ids;          // R32UI, VIS_SAMPLES samples: (object + 1) << bits | triangle
+uniform int u_pass;
+#else
 uniform usampler2D u_ids;            // R32UI: (object + 1) << SHADER_VIS_TRIANGLE_BITS | triangle
+#endif
 uniform samplerBuffer u_objects;     // forward.vert's object texels (common/base/shader_layout.h)
 uniform samplerBuffer u_vertices;    // R32F: position xyz, normal xyz per vertex, every mesh
 uniform usamplerBuffer u_indices;    // R32UI: every mesh's indices, each relative to its mesh
@@ -39,8 +54,9 @@ vertex vertex_fetch(int object, int triangle, int corner)
 }
 
 // The hit of the ray o + t d with triangle (a, b, c): its barycentrics (1 - u - v, u, v). A triangle
-// seen edge-on (det near 0) has no stable answer; its few pixels take the clamped values.
-vec3 ray_barycentrics(vec3 o, vec3 d, vec3 a, vec3 b, vec3 c)
+// seen edge-on (det near 0) has no stable answer; its few pixels take the clamped values. inside:
+// clamped to the triangle; else the plane's point, as the rasterizer extrapolates (MSAA edges).
+vec3 ray_barycentrics(vec3 o, vec3 d, vec3 a, vec3 b, vec3 c, bool inside)
 {
     vec3 e1 = b - a, e2 = c - a;
     vec3 p = cross(d, e2);
@@ -50,6 +66,8 @@ vec3 ray_barycentrics(vec3 o, vec3 d, vec3 a, vec3 b, vec3 c)
     vec3 s = o - a;
     float u = dot(s, p) / det;
     float v = dot(d, cross(s, e1)) / det;
+    if (!inside)
+        return vec3(1.0 - u - v, u, v);
     vec2 uv = clamp(vec2(u, v), 0.0, 1.0);
     uv /= max(1.0, uv.x + uv.y);
     return vec3(1.0 - uv.x - uv.y, uv);
@@ -62,17 +80,9 @@ vec3 id_colour(uint id)
     return vec3(uvec3(id, id >> 8, id >> 16) & 255u) / 255.0;
 }
 
-void main()
+// Triangle `id` at the pixel centre: its linear radiance (lit view), its cluster and view depth.
+vec3 shade_id(uint id, bool inside, out ivec2 range, out float depth)
 {
-    uint id = texelFetch(u_ids, ivec2(gl_FragCoord.xy), 0).r;
-    if (id == 0u) {
-        o_color = vec4(0.0, 0.0, 0.0, 1.0); // forward's clear colour
-        return;
-    }
-    if (u_show_ids) {
-        o_color = vec4(id_colour(id), 1.0);
-        return;
-    }
     int object = int(id >> SHADER_VIS_TRIANGLE_BITS) - 1;
     int triangle = int(id & ((1u << SHADER_VIS_TRIANGLE_BITS) - 1u));
     int t = SHADER_OBJECT_TEXELS * object;
@@ -91,17 +101,58 @@ void main()
     // the ray from the eye through the pixel's centre (its far-plane point, unprojected)
     vec4 far_point = u_inv_view_proj * vec4((gl_FragCoord.xy / u_viewport_size) * 2.0 - 1.0, 1.0, 1.0);
     vec3 d = far_point.xyz / far_point.w - u_eye;
-    vec3 w = ray_barycentrics(u_eye, d, a, b, c);
+    vec3 w = ray_barycentrics(u_eye, d, a, b, c, inside);
     vec3 p = w.x * a + w.y * b + w.z * c;
     vec3 normal = safe_normalize(normal_matrix * (w.x * v0.normal + w.y * v1.normal + w.z * v2.normal),
                                  vec3(0.0, 1.0, 0.0));
 
-    float depth = cluster_view_depth(p);
-    ivec2 range = cluster_range(cluster_index(gl_FragCoord.xy, depth));
-    vec3 col = vec3(0.0);
-    if (u_view_mode == SHADER_VIEW_LIT) {
-        vec3 view = safe_normalize(u_eye - p, normal);
-        col = cluster_shade(range, p, normal, view, material.rgb, material.a, shininess);
+    depth = cluster_view_depth(p);
+    range = cluster_range(cluster_index(gl_FragCoord.xy, depth));
+    if (u_view_mode != SHADER_VIEW_LIT)
+        return vec3(0.0);
+    vec3 view = safe_normalize(u_eye - p, normal);
+    return cluster_shade(range, p, normal, view, material.rgb, material.a, shininess);
+}
+
+#ifdef VIS_SAMPLES
+void main()
+{
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    uint ids[VIS_SAMPLES];
+    bool one = true, any = false;
+    for (int s = 0; s < VIS_SAMPLES; s++) {
+        ids[s] = texelFetch(u_ids, pixel, s).r;
+        one = one && ids[s] == ids[0];
+        any = any || ids[s] != 0u;
     }
+    if (!any || one != (u_pass == VIS_PASS_PIXELS))
+        discard; // the background, or the other pass's pixel
+    ivec2 range = ivec2(0);
+    float depth = 0.0;
+    vec3 sum = vec3(0.0), last = vec3(0.0);
+    for (int s = 0; s < VIS_SAMPLES; s++) {
+        if (ids[s] == 0u)
+            continue; // forward's clear colour, black
+        if (s == 0 || ids[s] != ids[s - 1])
+            last = u_show_ids ? id_colour(ids[s]) : shade_id(ids[s], one, range, depth);
+        sum += last;
+    }
+    o_color = u_show_ids ? vec4(sum / float(VIS_SAMPLES), 1.0) // the ids view: their colours averaged
+                         : cluster_output(u_view_mode, u_output_linear, range, depth, sum / float(VIS_SAMPLES));
+}
+#else
+void main()
+{
+    uint id = texelFetch(u_ids, ivec2(gl_FragCoord.xy), 0).r;
+    if (id == 0u)
+        discard; // the background: the picture is cleared to forward's clear colour
+    if (u_show_ids) {
+        o_color = vec4(id_colour(id), 1.0);
+        return;
+    }
+    ivec2 range;
+    float depth;
+    vec3 col = shade_id(id, true, range, depth);
     o_color = cluster_output(u_view_mode, u_output_linear, range, depth, col);
 }
+#endif

@@ -8,7 +8,8 @@
  * keeps the picture for the error against the exact reference (forward, fp32, cut-off 0).
  *
  *   build/bin/bench                 the course's sweep at 800x800 (3 to 5 minutes on 2 cores)
- *   build/bin/bench --full          the pages' sweep (about 15 minutes): scripts/update-docs.sh
+ *   build/bin/bench --full          the pages' sweep (about 15 minutes, then the storage table):
+ *                                   scripts/update-docs.sh
  *   build/bin/bench --quick         a small sweep (seconds): the test suite checks its output's shape
  *
  * This file is the top-level flow; the parts live in tools/bench/:
@@ -17,6 +18,7 @@
  *   bench_state      options, machine, rows    bench_error    a picture's error against the exact one
  *   bench_report     bench.csv and bench.md    bench_plots    the gnuplot script and plots
  *   bench_gbuffer    the G-buffer layouts: bytes, time and precision (--gbuffer-sweep)
+ *   bench_storage    what to store per pixel: bytes counted, passes timed, error (--storage)
  */
 #include "bench/bench_gbuffer.h"
 #include "bench/bench_measure.h"
@@ -26,6 +28,7 @@
 #include "bench/bench_report.h"
 #include "bench/bench_run.h"
 #include "bench/bench_state.h"
+#include "bench/bench_storage.h"
 
 #include "gl_util.h"
 #include "log.h"
@@ -36,25 +39,44 @@
 #include <string.h>
 #include <sys/stat.h>
 
+/* --gbuffer-sweep only or --storage only: the main sweep does not run, nor the other of the two
+ * unless it says `only` too. */
+static bool main_sweep_skipped(void)
+{
+    return bench_gbuffer_only() || bench_storage_only();
+}
+
+static bool gbuffer_sweep_runs(void)
+{
+    return bench_gbuffer_enabled() && (bench_gbuffer_only() || !bench_storage_only());
+}
+
+static bool storage_table_runs(void)
+{
+    return bench_storage_enabled() && (bench_storage_only() || !bench_gbuffer_only());
+}
+
 static bool write_outputs(const bench_state *st)
 {
     return bench_report_write_csv(st) && bench_report_write_md(st) &&
-           (!bench_gbuffer_enabled() || bench_gbuffer_write_csv(st)) &&
-           (!st->opt.plots || bench_gbuffer_only() || bench_plots_make(st));
+           (!gbuffer_sweep_runs() || bench_gbuffer_write_csv(st)) &&
+           (!storage_table_runs() || bench_storage_write_csv(st)) &&
+           (!st->opt.plots || main_sweep_skipped() || bench_plots_make(st));
 }
 
 /* What the run will do and about how long it takes, measured on the 2-core llvmpipe machine the
  * pages' figures come from (docs/compare.md); a GPU is much faster. */
 static void print_plan(const bench_options *o, int cases)
 {
-    const char *minutes = strcmp(o->sweep_name, "full") == 0     ? "about 15 minutes"
+    const char *minutes = strcmp(o->sweep_name, "full") == 0     ? "about 15 minutes (the storage table: more)"
                           : strcmp(o->sweep_name, "course") == 0 ? "3 to 5 minutes"
                                                                  : "under a minute";
     fprintf(stderr,
-            "bench: the %s sweep: %d cases (%d scene(s) x %d light counts, %d cut-offs) x %d renderers%s; "
+            "bench: the %s sweep: %d cases (%d scene(s) x %d light counts, %d cut-offs) x %d renderers%s%s; "
             "%s on 2 cores with llvmpipe%s\n",
             o->sweep_name, cases, o->scene_count, o->light_list_count, o->cutoff_count, o->renderer_count,
-            bench_gbuffer_enabled() ? ", then the G-buffer layouts" : "", minutes,
+            gbuffer_sweep_runs() ? ", then the G-buffer layouts" : "",
+            storage_table_runs() ? ", then the storage table" : "", minutes,
             strcmp(o->sweep_name, "full") == 0 ? "" : " (--full: the pages' sweep)");
     fprintf(stderr, "bench: results will be in %s/ (bench.md, bench.csv%s)\n", o->out_dir,
             o->plots ? ", time_vs_lights.png, speed_vs_error.png" : "");
@@ -90,8 +112,9 @@ int main(int argc, char **argv)
     bench_renderers *br = NULL;
     bool ok = bench_measure_create(o->width, o->height, &m) &&
               bench_renderers_create(o->width, o->height, &br) &&
-              (bench_gbuffer_only() || bench_run_all(&st, br, &m)) &&
-              (!bench_gbuffer_enabled() || bench_gbuffer_run(&st, br, &m));
+              (main_sweep_skipped() || bench_run_all(&st, br, &m)) &&
+              (!gbuffer_sweep_runs() || bench_gbuffer_run(&st, br, &m)) &&
+              (!storage_table_runs() || bench_storage_run(&st, br, &m));
     rc = ok ? EXIT_CODE_OK : EXIT_CODE_RUNTIME;
     if (ok)
         fprintf(stderr, "bench: %d cases in %.1f s\n", st.case_index, (bench_measure_now_ms() - t0) / 1000.0);

@@ -96,9 +96,12 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
         a->scene = *gs->src; /* a view of the caller's scene: never destroyed here */
         a->gs = *gs;
         a->query = gl_query_create();
-        /* A scene with metallic-roughness materials is drawn with a layout that holds them. */
-        const gbuffer_layout *layout = gbuffer_layout_for_scene(NULL, gs->src);
-        if (layout != gbuffer_default_layout()) {
+        /* --gbuffer as the runner takes it; a scene with metallic-roughness materials is drawn with a
+         * layout that holds them. The layout before is restored on close. */
+        const gbuffer_layout *asked = e->opt.gbuffer ? gbuffer_layout_find(e->opt.gbuffer) : NULL;
+        const gbuffer_layout *layout = gbuffer_layout_for_scene(asked, gs->src);
+        ok = layout != NULL;
+        if (ok && layout != gbuffer_default_layout()) {
             e->saved_layout = gbuffer_default_layout();
             ok = gbuffer_set_default_layout(layout);
         }

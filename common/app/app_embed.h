@@ -7,7 +7,10 @@
  *                                        the program name: --renderer, --view, --falloff and the
  *                                        chapter's own options), at the size of gs's view; runs its
  *                                        init. A chapter keeps its passes in file-static state, so
- *                                        one chapter is open once at a time (a second open fails)
+ *                                        one chapter is open once at a time (a second open fails).
+ *                                        --gbuffer LAYOUT sets the layout of every G-buffer made from
+ *                                        then on, as the runner does (gbuffer_set_default_layout: it
+ *                                        stays set after the chapter closes)
  *   app_embed_choose(e, args)            other arguments for the next frames: those a learner switches
  *                                        at run time (--renderer, --view, --falloff); the chapter's
  *                                        own options are read by its init and must stay as opened

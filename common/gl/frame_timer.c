@@ -94,6 +94,11 @@ void frame_timer_mark(const char *name)
     t->in_pass = true;
 }
 
+const char *frame_timer_pass(void)
+{
+    return active && active->in_pass ? active->current.names[active->current.count - 1] : NULL;
+}
+
 void frame_timer_hold(bool on)
 {
     if (active)

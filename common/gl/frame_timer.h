@@ -12,6 +12,8 @@
  *                               frame is being timed, or when `name` is the pass already running):
  *                               the passes in common/ call it themselves (work before the first
  *                               mark counts in the CPU clock's frame time only)
+ *   frame_timer_pass()          the name of the pass running in the frame being timed; NULL when
+ *                               none is (draw_count.h sums its counts under it)
  *   frame_timer_hold(on)        while on, frame_timer_mark() changes nothing: the pass running
  *                               takes in all the work inside, marks and all (compare mode times a
  *                               whole forward frame, with its own passes, as one pass that way)
@@ -54,6 +56,7 @@ bool frame_timer_create(frame_timer *t);
 void frame_timer_destroy(frame_timer *t);
 void frame_timer_begin(frame_timer *t);
 void frame_timer_mark(const char *name);
+const char *frame_timer_pass(void);
 void frame_timer_hold(bool on);
 void frame_timer_end(frame_timer *t);
 const char *frame_timer_clock(const frame_timer *t);

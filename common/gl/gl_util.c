@@ -10,6 +10,7 @@ static struct {
     long live_objects;
     long errors;
     GLuint fullscreen_vao;
+    const gl_draw_hooks *hooks;
 } state;
 
 #define COUNTED_PAIR(kind, gen, del)                                                                         \
@@ -103,7 +104,9 @@ void gl_draw_fullscreen(void)
     if (!state.fullscreen_vao)
         state.fullscreen_vao = gl_vertex_array_create();
     glBindVertexArray(state.fullscreen_vao);
+    gl_draw_hooks_begin(true);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    gl_draw_hooks_end();
 }
 
 /* glStencilOpSeparate for one face; a triple left out of the literal ({0, 0, 0}) keeps the value
@@ -215,8 +218,11 @@ void gl_read_depth(GLuint framebuffer, int width, int height, float *out)
 
 void gl_samples_begin(GLuint query, bool on)
 {
-    if (on)
-        glBeginQuery(GL_SAMPLES_PASSED, query);
+    if (!on)
+        return;
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    if (state.hooks)
+        state.hooks->samples_begin(query); /* a counted draw inside suspends it (draw_count.h) */
 }
 
 long gl_samples_end(GLuint query, bool on)
@@ -226,7 +232,21 @@ long gl_samples_end(GLuint query, bool on)
     glEndQuery(GL_SAMPLES_PASSED);
     GLuint samples = 0;
     glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
-    return (long)samples;
+    return (long)samples + (state.hooks ? state.hooks->samples_end() : 0);
+}
+
+void gl_draw_hooks_set(const gl_draw_hooks *hooks) { state.hooks = hooks; }
+
+void gl_draw_hooks_begin(bool fullscreen)
+{
+    if (state.hooks)
+        state.hooks->draw_begin(fullscreen);
+}
+
+void gl_draw_hooks_end(void)
+{
+    if (state.hooks)
+        state.hooks->draw_end();
 }
 
 void gl_util_shutdown(void) { gl_vertex_array_destroy(&state.fullscreen_vao); }

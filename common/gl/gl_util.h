@@ -35,6 +35,12 @@
  *   gl_samples_begin(query, on) / gl_samples_end(query, on)
  *                                         count the fragments that pass (GL_SAMPLES_PASSED) between
  *                                         the two; end returns the count, or -1 when `on` is false
+ *   gl_draw_hooks_set(hooks)              functions called around every draw the course issues and
+ *                                         around gl_samples_begin/end (draw_count.h installs them
+ *                                         while it counts); NULL: none
+ *   gl_draw_hooks_begin(fullscreen) / gl_draw_hooks_end()
+ *                                         around a draw (mesh.c's, gl_draw_fullscreen's): the hooks'
+ *                                         draw_begin / draw_end when set
  */
 #ifndef COMMON_GL_UTIL_H
 #define COMMON_GL_UTIL_H
@@ -90,6 +96,17 @@ void gl_read_rgba8(GLuint framebuffer, int attachment, int width, int height, un
 void gl_read_rgba_float(GLuint framebuffer, int attachment, int width, int height, float *out);
 void gl_read_depth(GLuint framebuffer, int width, int height, float *out);
 bool gl_have_compute(void);
+/* What a counter does around every draw and every gl_samples_begin/end (common/gl/draw_count.h). */
+typedef struct gl_draw_hooks {
+    void (*draw_begin)(bool fullscreen);
+    void (*draw_end)(void);
+    void (*samples_begin)(GLuint query); /* after glBeginQuery */
+    long (*samples_end)(void);           /* after the result: samples to add to it */
+} gl_draw_hooks;
+
+void gl_draw_hooks_set(const gl_draw_hooks *hooks);
+void gl_draw_hooks_begin(bool fullscreen);
+void gl_draw_hooks_end(void);
 void gl_samples_begin(GLuint query, bool on);
 long gl_samples_end(GLuint query, bool on);
 void gl_util_shutdown(void);

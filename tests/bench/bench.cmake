@@ -10,7 +10,9 @@ target_sources(bench PRIVATE
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_renderers.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_report.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_run.c
-  ${CMAKE_SOURCE_DIR}/tools/bench/bench_state.c)
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_state.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_storage.c
+  ${CMAKE_SOURCE_DIR}/tools/bench/bench_storage_report.c)
 
 # --quick runs a small sweep; the check is on the output's shape (columns, rows, finite numbers,
 # files), never on timings, which depend on the machine.
@@ -18,3 +20,10 @@ add_test(NAME bench.quick
   COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_quick.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-quick
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(bench.quick PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 60)
+
+# The storage table (--storage, docs/16_visibility_buffer.md): its shape, and the visibility buffer's
+# bytes per sample against the issue's target, counted; no timing is checked.
+add_test(NAME bench.storage
+  COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_storage.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-storage
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(bench.storage PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 60)

@@ -5,6 +5,8 @@
 #                              KHR_debug callback and reported by gl_check
 #   robust.resize_leaks        tests/gl/test_resize_leaks.c: 200 resizes of target + G-buffer + light
 #                              volumes, live GL objects unchanged, replaced objects deleted
+#   robust.draw_count          tests/gl/test_draw_count.c: the storage table's byte counter on draws
+#                              whose bytes are known (formats, masks, blending, discard, nesting)
 #   robust.resize_cycle.NN     every chapter, headless, --resize-cycle 200 (app.c fails the run if
 #                              the live GL objects grew), last frame equal to a plain run's
 #   window.resize_cycle.NN     the window under Xvfb resized 200 times (glfwSetWindowSize), last
@@ -14,7 +16,7 @@
 #   robust.inputs              tests/robust/run_robust.sh: render-time model errors (tests/bad/*.scene
 #                              marked "# expect-at: render"), broken and missing shaders, no GL at
 #                              all, outputs kept when a run fails
-set(COURSE_GL_TESTS test_gl_error test_resize_leaks)
+set(COURSE_GL_TESTS test_gl_error test_resize_leaks test_draw_count)
 foreach(name ${COURSE_GL_TESTS})
   add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/gl/${name}.c)
   target_link_libraries(${name} PRIVATE common)
@@ -22,7 +24,9 @@ foreach(name ${COURSE_GL_TESTS})
 endforeach()
 add_test(NAME robust.gl_error COMMAND test_gl_error)
 add_test(NAME robust.resize_leaks COMMAND test_resize_leaks)
-set_tests_properties(robust.gl_error robust.resize_leaks PROPERTIES LABELS robust SKIP_RETURN_CODE 77)
+add_test(NAME robust.draw_count COMMAND test_draw_count)
+set_tests_properties(robust.gl_error robust.resize_leaks robust.draw_count PROPERTIES LABELS robust
+  SKIP_RETURN_CODE 77)
 
 # The picture after 200 resizes and back must equal a plain run's (no golden needed: stale state
 # after a resize, such as a viewport or an attachment left at an old size, shows up here).

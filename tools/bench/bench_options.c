@@ -3,6 +3,7 @@
 #include "bench_options.h"
 
 #include "bench_gbuffer.h"
+#include "bench_storage.h"
 #include "bench_renderers.h"
 #include "progress.h"
 
@@ -29,7 +30,8 @@ void bench_options_print_help(FILE *f)
         "                        1, 5, 20; 5 timed frames per case (1 warm-up); no G-buffer sweep\n"
         "  --full                the pages' sweep (scripts/update-docs.sh; about 15 minutes): the five\n"
         "                        scenes at 1,4,16,64,256,1024,4096 and their own lights, the cut-off\n"
-        "                        at 0.5,1,2,5,10,20,32, the G-buffer sweep\n"
+        "                        at 0.5,1,2,5,10,20,32, the G-buffer sweep and\n"
+        "                        the storage table\n"
         "  --quick               small sweep for tests: 160x160, default scene, 1,16,64 lights,\n"
         "                        3 frames, cut-offs 2,5,16 at 16 lights\n\n"
         "  --lights LIST         light counts, comma-separated; 'scene' = the scene's own lights\n"
@@ -66,6 +68,7 @@ void bench_options_print_help(FILE *f)
         "  --no-plots            skip gnuplot\n"
         "  --quiet               no progress lines (written while a frame takes more than 2 s)\n");
     bench_gbuffer_print_help(f);
+    bench_storage_print_help(f);
     fprintf(f, "  --help                this text\n\n"
                "exit codes: 0 ok, 1 runtime failure, 2 usage error, 77 no GL context\n");
 }
@@ -218,6 +221,7 @@ static void set_defaults(bench_options *o)
     o->backend = BACKEND_EGL;
     o->sweep_name = "full";
     bench_gbuffer_reset(false);
+    bench_storage_reset(true, false);
 }
 
 /* The learner's sweep: the scenes and light counts where the renderers' order changes (one light,
@@ -233,6 +237,7 @@ static void set_course(bench_options *o)
     o->frames = 5, o->warmup = 1; /* a first look: medians of 5 frames, the pages' run takes 10 */
     o->case_budget_ms = 800;
     bench_gbuffer_reset(true);
+    bench_storage_reset(false, false);
 }
 
 static void set_quick(bench_options *o)
@@ -247,6 +252,7 @@ static void set_quick(bench_options *o)
     o->frames = 3, o->warmup = 1;
     o->case_budget_ms = 1000;
     bench_gbuffer_reset(true);
+    bench_storage_reset(false, true);
 }
 
 /* What one option with a value made of its value; OPTION_UNKNOWN lets the next group try it. */
@@ -372,6 +378,8 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
             continue;
         }
         int gbuffer = bench_gbuffer_parse_option(a, v);
+        if (gbuffer == 0)
+            gbuffer = bench_storage_parse_option(a, v);
         if (gbuffer != 0) {
             if (gbuffer < 0)
                 return EXIT_CODE_USAGE;

@@ -91,6 +91,12 @@ void bench_renderers_destroy(bench_renderers *br)
     free(br);
 }
 
+void bench_renderers_close_chapters(bench_renderers *br)
+{
+    course_set_destroy(&br->chapters);
+    br->last = &br->target;
+}
+
 const fbo *bench_renderers_target(const bench_renderers *br) { return br->last; }
 
 bool bench_renderers_read_target(const bench_renderers *br, image *out)

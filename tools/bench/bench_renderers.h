@@ -20,6 +20,9 @@
  *                                          every renderer's GL objects and the target; NULL in *out
  *                                          and false on failure (logged)
  *   bench_renderers_destroy(br)            NULL is fine
+ *   bench_renderers_close_chapters(br)     close every chapter br has open (they reopen on the next
+ *                                          frame), so another caller can open one with its own
+ *                                          arguments (a chapter is open once at a time)
  *   bench_renderers_target(br)             the framebuffer every frame ends in (for read-backs)
  *   bench_renderers_read_target(br, img)   that framebuffer's picture, top row first (made here)
  *   bench_render_frame(br, r, gs, count, work)
@@ -61,6 +64,7 @@ int bench_renderer_gbuffer_naive_bytes(void);
 
 bool bench_renderers_create(int width, int height, bench_renderers **out);
 void bench_renderers_destroy(bench_renderers *br);
+void bench_renderers_close_chapters(bench_renderers *br);
 const fbo *bench_renderers_target(const bench_renderers *br);
 bool bench_renderers_read_target(const bench_renderers *br, image *out);
 bool bench_render_frame(bench_renderers *br, int r, const gpu_scene *gs, bool count, bench_frame_work *work);

@@ -2,6 +2,7 @@
 #include "bench_report.h"
 
 #include "bench_gbuffer.h"
+#include "bench_storage.h"
 #include "bench_renderers.h"
 
 #include "gbuffer.h"
@@ -453,5 +454,7 @@ bool bench_report_write_md(const bench_state *st)
     write_cutoff(f, st);
     if (bench_gbuffer_enabled())
         bench_gbuffer_write_md(f, st);
+    if (bench_storage_enabled())
+        bench_storage_write_md(f, st);
     return bench_report_close_tmp(f, tmp, st->opt.out_dir, "bench.md");
 }
