@@ -37,6 +37,7 @@
 #include "vis_meshes.h"
 
 #include <stdio.h>
+#include <string.h>
 
 #define VIS_MAX_SAMPLES 32
 
@@ -71,6 +72,7 @@ static struct {
     vis_meshes meshes;
     clusters c;
     GLuint visibility_program, shading_program;
+    GLuint map_samplers[2]; /* the material images read trilinear, without anisotropy (see make_samplers) */
 } state;
 
 /* Before init: a scene whose ids would not fit the 32 bits is refused, with the limit it breaks (the
@@ -85,16 +87,6 @@ static bool accepts_scene(const app *a)
                   gs->src->object_count, VIS_MAX_OBJECTS, 32 - SHADER_VIS_TRIANGLE_BITS);
         return false;
     }
-    /* Its shading pass rebuilds each pixel's position and normal from the raw vertices, but not yet the
-     * texture coordinates and tangents a material's images need (chapter 18). */
-    for (int m = 0; m < gs->src->material_count; m++)
-        for (int k = 0; k < SCENE_MAP_COUNT; k++)
-            if (gs->src->materials[m].pbr && gs->src->materials[m].maps[k] >= 0) {
-                log_error("%s: material '%s' has images; the visibility buffer's shading pass reads none (its "
-                          "factors alone would be drawn): use --renderer forward, or chapter 18",
-                          gs->src->path, gs->src->materials[m].name);
-                return false;
-            }
     for (int m = 0; m < gs->src->mesh_count; m++)
         if (gs->meshes[m].index_count / 3 > VIS_MAX_TRIANGLES) {
             log_error("%s: mesh '%s' has %d triangles; the visibility buffer's ids hold at most %ld a mesh "
@@ -104,6 +96,28 @@ static bool accepts_scene(const app *a)
             return false;
         }
     return true;
+}
+
+/* The shading pass reads the material images with textureGrad, the derivatives rebuilt from the
+ * triangle. llvmpipe (Mesa 22.3) ignores those derivatives on a texture filtered anisotropically, so
+ * the pass reads through sampler objects of its own: the arrays' trilinear filtering without the
+ * anisotropy (docs/16_visibility_buffer.md, "Textures"). Forward matches it with --anisotropy 1. */
+static void make_samplers(void)
+{
+    glGenSamplers(2, state.map_samplers);
+    gl_live_objects_add(2);
+    for (int i = 0; i < 2; i++) {
+        glSamplerParameteri(state.map_samplers[i], GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glSamplerParameteri(state.map_samplers[i], GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glSamplerParameteri(state.map_samplers[i], GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glSamplerParameteri(state.map_samplers[i], GL_TEXTURE_WRAP_T, GL_REPEAT);
+    }
+}
+
+static void bind_samplers(bool on)
+{
+    glBindSampler(SHADER_UNIT_MAPS_SRGB, on ? state.map_samplers[0] : 0);
+    glBindSampler(SHADER_UNIT_MAPS_LINEAR, on ? state.map_samplers[1] : 0);
 }
 
 static bool init(app *a)
@@ -120,6 +134,7 @@ static bool init(app *a)
     state.visibility_program = gl_program_load("forward.vert", "visibility.frag", NULL);
     state.shading_program =
         gl_program_load("fullscreen.vert", "visibility_shade.frag", state.samples > 1 ? defines : NULL);
+    make_samplers();
     return state.visibility_program && state.shading_program && vis_meshes_create(&state.meshes, &a->gs) &&
            clusters_create(&state.c, &lists);
 }
@@ -173,6 +188,7 @@ static bool shade(app *a)
     clusters_use(&state.c, gs, p, a->linear_output ? CLUSTERS_VIEW_LINEAR : CLUSTERS_VIEW_LIT);
     gpu_scene_bind_objects(gs, p, SHADER_UNIT_OBJECTS);
     vis_meshes_bind(&state.meshes, p, SHADER_UNIT_VIS_MESHES);
+    bind_samplers(true);
     glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_GBUFFER);
     glBindTexture(state.samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, state.ids.color[0]);
     glActiveTexture(GL_TEXTURE0);
@@ -189,6 +205,7 @@ static bool shade(app *a)
         gl_draw_fullscreen();
     }
     a->shaded_pixels = gl_samples_end(a->query, a->count_pixels);
+    bind_samplers(false);
     gl_pass_state_reset();
     return gl_check("16 shading");
 }
@@ -209,6 +226,11 @@ static void cleanup(app *a)
 {
     (void)a;
     clusters_destroy(&state.c);
+    if (state.map_samplers[0]) {
+        glDeleteSamplers(2, state.map_samplers);
+        gl_live_objects_add(-2);
+        memset(state.map_samplers, 0, sizeof state.map_samplers);
+    }
     vis_meshes_destroy(&state.meshes);
     fbo_destroy(&state.ids);
     gl_program_destroy(&state.shading_program);

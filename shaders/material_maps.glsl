@@ -8,10 +8,19 @@
 uniform sampler2DArray u_maps_srgb;   // base colour, emissive: GL_SRGB8_ALPHA8, sampled as linear values
 uniform sampler2DArray u_maps_linear; // metal-rough, normal, occlusion: GL_RGBA8, sampled as stored
 
+#ifdef MATERIAL_MAPS_GRAD
+// Chapter 16's shading pass has no rasterised varyings: it rebuilds the texture coordinate and its
+// screen derivatives from the triangle, sets these two, and the maps are read with textureGrad, so a
+// texture's mip level is chosen from the same footprint as the rasterizer's implicit derivatives.
+vec2 g_map_dx, g_map_dy;
+#define MAP_SAMPLE(sampler, uvw) textureGrad(sampler, uvw, g_map_dx, g_map_dy)
+#else
 in vec2 v_uv;
 in vec4 v_tangent;
 flat in vec4 v_maps;     // layers: base, metal-rough, normal, occlusion; -1 for none
 flat in vec4 v_emissive; // emissive rgb, its map's layer
+#define MAP_SAMPLE(sampler, uvw) texture(sampler, uvw)
+#endif
 
 // A normal-map texel (0..1 per channel) to a world-space normal. The tangent is made perpendicular to
 // n here (interpolation bends it); a texel that decodes below the surface (z <= 0, such as (0, 0, 0),
@@ -31,23 +40,32 @@ vec3 material_normal_from_map(vec3 n, vec4 tangent, vec3 texel)
 // The maps times the material's factors, as glTF 2.0 defines them: base colour times the base map,
 // roughness times the map's G, metallic times its B; the normal from the normal map; occlusion from
 // the occlusion map's R (1 without one).
-void material_apply_maps(inout vec3 albedo, inout float specular, inout float shininess, inout vec3 n,
-                         out float occlusion)
+void material_apply_maps_at(vec2 uv, vec4 tangent, vec4 maps, inout vec3 albedo, inout float specular,
+                            inout float shininess, inout vec3 n, out float occlusion)
 {
     occlusion = 1.0;
     if (!material_is_pbr(shininess))
         return;
-    if (v_maps.x >= 0.0)
-        albedo *= texture(u_maps_srgb, vec3(v_uv, v_maps.x)).rgb;
-    if (v_maps.y >= 0.0) {
-        vec4 mr = texture(u_maps_linear, vec3(v_uv, v_maps.y));
+    if (maps.x >= 0.0)
+        albedo *= MAP_SAMPLE(u_maps_srgb, vec3(uv, maps.x)).rgb;
+    if (maps.y >= 0.0) {
+        vec4 mr = MAP_SAMPLE(u_maps_linear, vec3(uv, maps.y));
         specular *= mr.b;
         shininess = -1.0 - (-1.0 - shininess) * mr.g;
     }
-    if (v_maps.z >= 0.0)
-        n = material_normal_from_map(n, v_tangent, texture(u_maps_linear, vec3(v_uv, v_maps.z)).rgb);
-    if (v_maps.w >= 0.0)
-        occlusion = texture(u_maps_linear, vec3(v_uv, v_maps.w)).r;
+    if (maps.z >= 0.0)
+        n = material_normal_from_map(n, tangent, MAP_SAMPLE(u_maps_linear, vec3(uv, maps.z)).rgb);
+    if (maps.w >= 0.0)
+        occlusion = MAP_SAMPLE(u_maps_linear, vec3(uv, maps.w)).r;
 }
+
+#ifndef MATERIAL_MAPS_GRAD
+// The surface the rasterizer interpolated (forward.vert's varyings).
+void material_apply_maps(inout vec3 albedo, inout float specular, inout float shininess, inout vec3 n,
+                         out float occlusion)
+{
+    material_apply_maps_at(v_uv, v_tangent, v_maps, albedo, specular, shininess, n, occlusion);
+}
+#endif
 
 #endif

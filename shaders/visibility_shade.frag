@@ -3,8 +3,9 @@
 // id, fetches the triangle's three vertices (vis_meshes: positions and normals, object space), puts
 // them in the world with the object's matrices, intersects the pixel's ray from the eye with the
 // triangle (Moller-Trumbore: the barycentrics of the hit, perspective-correct by construction),
-// interpolates position and normal as the rasterizer would have, and shades with chapter 11's
-// cluster lists. u_show_ids: a colour per id instead (hashed). The background (id 0) is discarded:
+// interpolates position, normal, texture coordinate and tangent as the rasterizer would have (the
+// coordinate's screen derivatives from the rays through the next pixels: a material's images are read
+// at the mip level forward reads them), and shades with chapter 11's cluster lists. u_show_ids: a colour per id instead (hashed). The background (id 0) is discarded:
 // the chapter clears the picture to it first, so the pass's GL_SAMPLES_PASSED counts the pixels
 // that fetch a triangle.
 // VIS_SAMPLES N (--samples N): the ids hold N samples a pixel. Drawn twice: u_pass VIS_PASS_PIXELS
@@ -16,6 +17,8 @@
 #include "shading.glsl"
 #include "heat.glsl"
 #include "clusters.glsl"
+#define MATERIAL_MAPS_GRAD 1 // the maps read with textureGrad: the derivatives come from the triangle
+#include "material_maps.glsl"
 
 #ifdef VIS_SAMPLES
 #define VIS_PASS_PIXELS 0
@@ -40,6 +43,8 @@ out vec4 o_color;
 
 struct vertex {
     vec3 position, normal; // object space
+    vec2 uv;
+    vec4 tangent; // object space, w the handedness
 };
 
 vertex vertex_fetch(int object, int triangle, int corner)
@@ -50,6 +55,9 @@ vertex vertex_fetch(int object, int triangle, int corner)
     vertex v;
     v.position = vec3(texelFetch(u_vertices, f).r, texelFetch(u_vertices, f + 1).r, texelFetch(u_vertices, f + 2).r);
     v.normal = vec3(texelFetch(u_vertices, f + 3).r, texelFetch(u_vertices, f + 4).r, texelFetch(u_vertices, f + 5).r);
+    v.uv = vec2(texelFetch(u_vertices, f + 6).r, texelFetch(u_vertices, f + 7).r); // common/scene/mesh_data.h
+    v.tangent = vec4(texelFetch(u_vertices, f + 8).r, texelFetch(u_vertices, f + 9).r, texelFetch(u_vertices, f + 10).r,
+                     texelFetch(u_vertices, f + 11).r);
     return v;
 }
 
@@ -80,6 +88,13 @@ vec3 id_colour(uint id)
     return vec3(uvec3(id, id >> 8, id >> 16) & 255u) / 255.0;
 }
 
+// The ray from the eye through window point `frag` (its far-plane point, unprojected).
+vec3 pixel_ray(vec2 frag)
+{
+    vec4 far_point = u_inv_view_proj * vec4((frag / u_viewport_size) * 2.0 - 1.0, 1.0, 1.0);
+    return far_point.xyz / far_point.w - u_eye;
+}
+
 // Triangle `id` at the pixel centre: its linear radiance (lit view), its cluster and view depth.
 vec3 shade_id(uint id, bool inside, out ivec2 range, out float depth)
 {
@@ -98,20 +113,34 @@ vec3 shade_id(uint id, bool inside, out ivec2 range, out float depth)
            v2 = vertex_fetch(object, triangle, 2);
     vec3 a = (model * vec4(v0.position, 1.0)).xyz, b = (model * vec4(v1.position, 1.0)).xyz,
          c = (model * vec4(v2.position, 1.0)).xyz;
-    // the ray from the eye through the pixel's centre (its far-plane point, unprojected)
-    vec4 far_point = u_inv_view_proj * vec4((gl_FragCoord.xy / u_viewport_size) * 2.0 - 1.0, 1.0, 1.0);
-    vec3 d = far_point.xyz / far_point.w - u_eye;
-    vec3 w = ray_barycentrics(u_eye, d, a, b, c, inside);
+    vec3 w = ray_barycentrics(u_eye, pixel_ray(gl_FragCoord.xy), a, b, c, inside);
     vec3 p = w.x * a + w.y * b + w.z * c;
     vec3 normal = safe_normalize(normal_matrix * (w.x * v0.normal + w.y * v1.normal + w.z * v2.normal),
                                  vec3(0.0, 1.0, 0.0));
+    // The texture coordinate, and its screen derivatives as the rasterizer takes them: across the 2 x 2
+    // quad the pixel lies in, from its first pixel to the next right and up, each where that pixel's
+    // ray meets this triangle's plane (unclamped: a neighbour on another triangle is extrapolated, as
+    // the rasterizer's helper pixels are).
+    vec2 uv = w.x * v0.uv + w.y * v1.uv + w.z * v2.uv;
+    vec2 quad = floor(gl_FragCoord.xy * 0.5) * 2.0 + 0.5;
+    vec3 wc = ray_barycentrics(u_eye, pixel_ray(quad), a, b, c, false);
+    vec3 wx = ray_barycentrics(u_eye, pixel_ray(quad + vec2(1.0, 0.0)), a, b, c, false);
+    vec3 wy = ray_barycentrics(u_eye, pixel_ray(quad + vec2(0.0, 1.0)), a, b, c, false);
+    mat3x2 uvs = mat3x2(v0.uv, v1.uv, v2.uv);
+    g_map_dx = uvs * (wx - wc);
+    g_map_dy = uvs * (wy - wc);
+    vec4 tangent = vec4(mat3(model) * (w.x * v0.tangent.xyz + w.y * v1.tangent.xyz + w.z * v2.tangent.xyz),
+                        v0.tangent.w);
+    float occlusion;
+    material_apply_maps_at(uv, tangent, texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MAPS), material.rgb, material.a,
+                           shininess, normal, occlusion);
 
     depth = cluster_view_depth(p);
     range = cluster_range(cluster_index(gl_FragCoord.xy, depth));
     if (u_view_mode != SHADER_VIEW_LIT)
         return vec3(0.0);
     vec3 view = safe_normalize(u_eye - p, normal);
-    return cluster_shade(range, p, normal, view, material.rgb, material.a, shininess);
+    return cluster_shade(range, p, normal, view, material.rgb, material.a, shininess, occlusion);
 }
 
 #ifdef VIS_SAMPLES

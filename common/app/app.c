@@ -5,6 +5,7 @@
 #include "data_dir.h"
 #include "gbuffer.h"
 #include "gl_util.h"
+#include "gpu_textures.h"
 #include "image.h"
 #include "input.h"
 #include "light.h"
@@ -345,6 +346,7 @@ static int app_setup(app *a, const app_desc *desc)
 {
     if (!app_check_size_limits(a->width, a->height))
         return EXIT_CODE_USAGE;
+    gpu_textures_set_anisotropy(a->options->anisotropy > 0 ? (float)a->options->anisotropy : GPU_TEXTURES_ANISOTROPY);
     if (!gpu_scene_create(&a->scene, &a->gs))
         return EXIT_CODE_USAGE; /* a model file that cannot be loaded is an input error */
     if (desc->accepts_scene && !desc->accepts_scene(a))

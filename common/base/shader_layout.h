@@ -68,8 +68,8 @@
     X(MESH_VERTEX_FLOATS, 12) /* position xyz, normal xyz, uv, tangent xyzw (common/scene/mesh_data.h) */\
     X(VIS_TRIANGLE_BITS, 20) /* chapter 16's id: (object + 1) << 20 | triangle; 0 is the background */ \
     X(UNIT_AO, 14)           /* chapter 17: the ambient occlusion the ambient term reads */            \
-    X(UNIT_MAPS_SRGB, 11)    /* chapter 18: the colour images' array (gpu_textures.h), and beside it */ \
-    X(UNIT_MAPS_LINEAR, 12)  /* the data images': chapter 16's units, which no program samples with these */\
+    X(UNIT_MAPS_SRGB, 15)    /* chapter 18: the colour images' array (gpu_textures.h), and beside it */ \
+    X(UNIT_MAPS_LINEAR, 16)  /* the data images': past every other unit (chapter 16 reads both) */     \
     X(AO_MAX_SAMPLES, 64)    /* the most SSAO kernel directions (--ao-samples) */                      \
     X(AO_STEPS, 4)           /* points marched along each kernel direction, r/4 apart */               \
     X(AO_NOISE_SIZE, 4)      /* the rotation noise tile: 4 x 4 pixels, removed by a blur that wide */

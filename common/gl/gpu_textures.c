@@ -59,6 +59,10 @@ static bool make_array(const scene *s, bool srgb, int side, int layers, const in
     return ok && gl_check("gpu_textures: an array");
 }
 
+static float anisotropy_wanted = GPU_TEXTURES_ANISOTROPY;
+
+void gpu_textures_set_anisotropy(float most) { anisotropy_wanted = most >= 1.0f ? most : 1.0f; }
+
 bool gpu_textures_create(const scene *s, gpu_textures *out)
 {
     memset(out, 0, sizeof *out);
@@ -86,10 +90,10 @@ bool gpu_textures_create(const scene *s, gpu_textures *out)
         return false;
     }
     out->anisotropy = 1.0f;
-    if (has_anisotropy()) {
+    if (anisotropy_wanted > 1.0f && has_anisotropy()) {
         GLfloat most = 1.0f;
         glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &most);
-        out->anisotropy = most < GPU_TEXTURES_ANISOTROPY ? most : GPU_TEXTURES_ANISOTROPY;
+        out->anisotropy = most < anisotropy_wanted ? most : anisotropy_wanted;
     }
     bool ok = make_array(s, true, out->srgb_layers ? out->srgb_side : 1, out->srgb_layers ? out->srgb_layers : 1,
                          out->layer, out->anisotropy, &out->srgb) &&

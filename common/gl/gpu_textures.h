@@ -8,6 +8,8 @@
  *                                        of two (at most GPU_TEXTURES_SIDE_MAX and the context's limit),
  *                                        smaller images resampled up to it; mipmapped, trilinear, and
  *                                        anisotropic (GPU_TEXTURES_ANISOTROPY) where the context has it
+ *   gpu_textures_set_anisotropy(n)       --anisotropy: at most n samples along a footprint from now on
+ *                                        (1: trilinear only); default GPU_TEXTURES_ANISOTROPY
  *   gpu_textures_destroy(t)
  *   gpu_textures_bind(t, program)        u_maps_srgb and u_maps_linear on units SHADER_UNIT_MAPS_SRGB and
  *                                        SHADER_UNIT_MAPS_LINEAR
@@ -32,6 +34,7 @@ typedef struct gpu_textures {
 } gpu_textures;
 
 bool gpu_textures_create(const scene *s, gpu_textures *out);
+void gpu_textures_set_anisotropy(float most);
 void gpu_textures_destroy(gpu_textures *t);
 void gpu_textures_bind(const gpu_textures *t, GLuint program);
 

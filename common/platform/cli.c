@@ -112,6 +112,7 @@ static const struct number_option {
     {"--resize-cycle", NUMBER_INT, offsetof(cli_options, resize_cycle), 0, 100000, "0..100000"},
     {"--minimise-cycle", NUMBER_INT, offsetof(cli_options, minimise_cycle), 0, 1000, "0..1000"},
     {"--cutoff", NUMBER_DOUBLE, offsetof(cli_options, cutoff), 0, 1e6, "a number >= 0"},
+    {"--anisotropy", NUMBER_INT, offsetof(cli_options, anisotropy), 1, 16, "a whole number from 1 to 16"},
 };
 
 /* Options without a value. */

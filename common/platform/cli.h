@@ -76,6 +76,8 @@ typedef struct cli_options {
     uint32_t seed;
     float time;
     double cutoff;
+    int anisotropy;       /* --anisotropy: most samples a texture lookup takes along its footprint; 0:
+                             the course's default (common/gl/gpu_textures.h) */
     const char *falloff;  /* "hard" or "windowed"; NULL: the scene's (directive `falloff`) */
     const char *gbuffer;  /* one of gbuffer_layout_names (gbuffer_layout_names.h); NULL: the default (common/render/gbuffer.h) */
     const char *camera;   /* "eye X Y Z target X Y Z ...": replaces those of the scene's camera */

@@ -89,6 +89,8 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --time T                 animation time in seconds (default 0)\n"
             "  --paused                 window: start with the animation stopped at --time\n"
             "  --cutoff C               attenuation cut-off (default 5/256 = %.6f; 0 = exact, no cut-off)\n"
+            "  --anisotropy N           a material image's most samples along a footprint, 1 to 16 (1: off;\n"
+            "                           default 8, where the context filters anisotropically)\n"
             "  --bench                  time frames (glFinish + monotonic clock) and print a 'bench:' line\n"
             "  --warmup N               untimed frames before --bench timing (default 3)\n"
             "  --gl-debug               report GL debug messages; any GL error fails the run\n"

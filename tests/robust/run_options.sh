@@ -52,6 +52,8 @@ for ch in $chapters; do
         "$ch" --script noshotdir.script
 done
 expect 2 "gif.script:1: screenshot: expected a file name ending in .png" 00_forward --script gif.script
+expect 2 "bad --anisotropy '0': expected a whole number from 1 to 16" 16_visibility_buffer --anisotropy 0
+expect 2 "bad --anisotropy '2.5': expected a whole number from 1 to 16" 18_pbr_materials --anisotropy 2.5
 # Each chapter's own options.
 expect 2 "bad --radius '0': expected a number from 1e-06 to 1000000" 04_light_volumes --radius 0
 expect 2 "bad --radius 'big'" 04_light_volumes --radius big
