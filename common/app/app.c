@@ -339,7 +339,8 @@ static int app_open(app *a, const app_desc *desc, const cli_options *opt)
 /* GL resources of the runner and the chapter. */
 static int app_setup(app *a, const app_desc *desc)
 {
-    if (!app_check_size_limits(a->width, a->height))
+    if (!app_check_size_limits(a->width, a->height) ||
+        !app_check_size_memory(a->width, a->height, a->options->screenshot != NULL))
         return EXIT_CODE_USAGE;
     if (!gpu_scene_create(&a->scene, &a->gs))
         return EXIT_CODE_USAGE; /* a model file that cannot be loaded is an input error */
