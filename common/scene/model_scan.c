@@ -342,8 +342,9 @@ static bool prescan_ply(const char *d, size_t size, const model_limits *lim, cha
         /* Assimp 5.2 sizes its vertex array by the first vertex element and its face array by the
          * first face element, then writes the entries of a later one at their index in those arrays:
          * past the end when the later one is longer (a heap overflow inside Assimp, which
-         * AddressSanitizer cannot see; it found it as damage to its own bookkeeping). A triangle
-         * strip element writes into the same face array, one triangle a strip, leaking the rest. */
+         * AddressSanitizer cannot see: it found it as damage to its own bookkeeping; Assimp's issue
+         * 5729, fixed after 5.2). A triangle strip element writes into the same face array, one
+         * triangle a strip, leaking the rest. */
         if (strcmp(el[i].name, "tristrips") == 0)
             return model_fail(why, n, "PLY triangle strips (element tristrips) are not read: Assimp 5.2 keeps one "
                                       "triangle of each strip");
