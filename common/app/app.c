@@ -344,7 +344,8 @@ static int app_open(app *a, const app_desc *desc, const cli_options *opt)
 /* GL resources of the runner and the chapter. */
 static int app_setup(app *a, const app_desc *desc)
 {
-    if (!app_check_size_limits(a->width, a->height))
+    if (!app_check_size_limits(a->width, a->height) ||
+        !app_check_size_memory(a->width, a->height, a->options->screenshot != NULL))
         return EXIT_CODE_USAGE;
     gpu_textures_set_anisotropy(a->options->anisotropy > 0 ? (float)a->options->anisotropy : GPU_TEXTURES_ANISOTROPY);
     if (!gpu_scene_create(&a->scene, &a->gs))

@@ -51,12 +51,15 @@ bool app_target_make(app *a);
 /* The command line's other consequences (app_options.c):
  *   app_print_gl_info(opt, program)     --gl-info: key=value lines about the context; an exit code
  *   app_check_size_limits(w, h)         false (logged) when the context cannot make a w x h target
+ *   app_check_size_memory(w, h, shot)   false (logged) when a software rasteriser's memory cannot
+ *                                       hold even the runner's own w x h target (and the screenshot)
  *   app_apply_camera(scene, given)      --camera's attributes over the scene's camera (parsed as a
  *                                       scene's camera line); false (logged) when they are wrong
  *   app_with_forward_plus(list, out, capacity)
  *                                       `list` with forward-plus after forward (in out), or list */
 int app_print_gl_info(const cli_options *opt, const char *program);
 bool app_check_size_limits(int width, int height);
+bool app_check_size_memory(int width, int height, bool screenshot);
 bool app_apply_camera(scene *s, const char *given);
 const char *const *app_with_forward_plus(const char *const *list, const char **out, int capacity);
 

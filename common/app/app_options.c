@@ -8,6 +8,8 @@
 
 #include <stdio.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 static int min_int(int x, int y) { return x < y ? x : y; }
 
@@ -66,6 +68,58 @@ bool app_check_size_limits(int width, int height)
         return false;
     }
     return true;
+}
+
+/* The bytes a software rasteriser can still take, and where that bound comes from: the memory the
+ * system has available (MemAvailable + SwapFree), or what is left of this process's address-space
+ * limit (ulimit -v), whichever is smaller; 0 when neither can be read (not Linux). */
+static double memory_left(const char **source)
+{
+    double left = 0, kb, avail = -1, swap = 0;
+    char line[160];
+    FILE *f = fopen("/proc/meminfo", "r");
+    for (; f && fgets(line, sizeof line, f);)
+        if (sscanf(line, "MemAvailable: %lf kB", &kb) == 1)
+            avail = kb * 1024;
+        else if (sscanf(line, "SwapFree: %lf kB", &kb) == 1)
+            swap = kb * 1024;
+    if (f)
+        fclose(f);
+    if (avail >= 0)
+        left = avail + swap, *source = "memory the system has available";
+    struct rlimit lim;
+    double pages = 0;
+    if (getrlimit(RLIMIT_AS, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY && (f = fopen("/proc/self/statm", "r"))) {
+        if (fscanf(f, "%lf", &pages) != 1)
+            pages = 0;
+        fclose(f);
+        double as_left = (double)lim.rlim_cur - pages * (double)sysconf(_SC_PAGESIZE);
+        if (left == 0 || as_left < left)
+            left = as_left > 1 ? as_left : 1, *source = "address space left under this process's limit (ulimit -v)";
+    }
+    return left;
+}
+
+bool app_check_size_memory(int width, int height, bool screenshot)
+{
+    /* Only where GL's textures live in this process: a GPU's memory is its own, and GL does not say
+     * how much of it is free. */
+    const char *renderer = (const char *)glGetString(GL_RENDERER);
+    if (!renderer || !(strstr(renderer, "llvmpipe") || strstr(renderer, "softpipe") || strstr(renderer, "swrast")))
+        return true;
+    /* A floor, so that no run that could succeed is refused: the runner's own target (RGBA8 and a
+     * 32-bit depth) and the --screenshot read-back; every chapter's targets come on top (chapter 03
+     * with the default G-buffer: 20 bytes a pixel in all, docs/hard-cases.md case 12). */
+    const int per_pixel = 8 + (screenshot ? 4 : 0);
+    const double mib = 1024.0 * 1024.0, need = (double)width * height * per_pixel;
+    const char *source = "";
+    const double left = memory_left(&source);
+    if (left <= 0 || need <= left)
+        return true;
+    log_error("--size %dx%d needs at least %.0f MiB (%d bytes a pixel for the runner's own target%s, before the "
+              "chapter's), more than the %.0f MiB of %s: try a smaller --size",
+              width, height, need / mib, per_pixel, screenshot ? " and the screenshot" : "", left / mib, source);
+    return false;
 }
 
 /* A chapter that offers `forward` offers the strongest forward too: Forward+ (chapter 11) joins its

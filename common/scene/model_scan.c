@@ -66,9 +66,67 @@ static bool check_limits(long long vertices, long long faces, const model_limits
     return true;
 }
 
+/* Skips what Assimp 5.2's OFF reader skips between tokens: spaces, line ends and comment lines. */
+static const char *off_skip(const char *p, const char *end)
+{
+    for (;;) {
+        while (p < end && (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n'))
+            p++;
+        if (p == end || *p != '#')
+            return p;
+        while (p < end && *p != '\r' && *p != '\n')
+            p++;
+    }
+}
+
+/* The vertex and face lines as Assimp 5.2 reads them, from just after the face count: the edge
+ * count (digits, wherever they are), then one line each, comment lines included. Two of its
+ * faults are refused here:
+ * - a face line whose corner count is not 1 to 9: it drops that face and takes one off its face
+ *   count without reading another line in its place, so enough of them wrap the count past zero
+ *   and its validation reads past the face array (valgrind: an invalid read; a crash elsewhere);
+ * - a line of 4096 bytes or more: its line buffer is 4096 bytes and it writes the end mark one
+ *   past it, on the stack. */
+static bool off_check_lines(const char *p, const char *end, long long vertices, long long faces, char *why,
+                            size_t n)
+{
+    p = off_skip(p, end);
+    while (p < end && *p >= '0' && *p <= '9')
+        p++;
+    p = off_skip(p, end);
+    for (long long line = 0; line < vertices + faces && p < end; line++) {
+        const char *stop = p;
+        while (stop < end && *stop != '\r' && *stop != '\n')
+            stop++;
+        if (stop - p >= 4096)
+            return model_fail(why, n, "OFF line %lld after the counts is %td bytes long; Assimp reads at most 4095",
+                              line + 1, stop - p);
+        if (line >= vertices) {
+            const char *q = p;
+            while (q < stop && (*q == ' ' || *q == '\t'))
+                q++;
+            int corners = 0, digits = 0;
+            for (; q < stop && *q >= '0' && *q <= '9' && digits < 3; q++, digits++)
+                corners = corners * 10 + (*q - '0');
+            if (corners < 1 || corners > 9 || (q < stop && *q >= '0' && *q <= '9'))
+                return model_fail(why, n, "OFF face %lld does not start with a corner count from 1 to 9 "
+                                  "(Assimp 5.2 miscounts its faces on any other)", line - vertices + 1);
+        }
+        p = stop;
+        while (p < end && (*p == '\r' || *p == '\n'))
+            p++;
+    }
+    return true;
+}
+
 /* OFF: [ST][C][N][4][n]OFF, then the vertex, face and edge counts; one vertex or face a line. */
 static bool prescan_off(const char *d, size_t size, const model_limits *lim, char *why, size_t n)
 {
+    /* Assimp's reader stops at a NUL byte and splits tokens and lines at a form feed differently
+     * from off_check_lines: neither belongs in a text file. */
+    for (size_t i = 0; i < size; i++)
+        if (d[i] == '\0' || d[i] == '\f' || d[i] == '\v')
+            return model_fail(why, n, "byte %zu is a control character (0x%02x), not text", i, (unsigned)d[i]);
     cursor c = {d, d + size};
     const char *tok;
     size_t len;
@@ -84,8 +142,8 @@ static bool prescan_off(const char *d, size_t size, const model_limits *lim, cha
     bool header = tend - t == 3 && memcmp(t, "OFF", 3) == 0;
     if (!header)
         c.p = tok; /* the header is optional: the counts come first */
-    else if (dimension && !next_token(&c, true, &tok, &len))
-        return model_fail(why, n, "the nOFF header has no dimension");
+    else if (dimension && (!next_token(&c, true, &tok, &len) || len != 1 || *tok < '1' || *tok > '3'))
+        return model_fail(why, n, "the nOFF header's dimension is not 1, 2 or 3");
     long long counts[2];
     for (int i = 0; i < 2; i++) {
         if (!next_token(&c, true, &tok, &len) || !parse_count(tok, len, &counts[i])) {
@@ -98,6 +156,7 @@ static bool prescan_off(const char *d, size_t size, const model_limits *lim, cha
     }
     if (!check_limits(counts[0], counts[1], lim, why, n))
         return false;
+    const char *after_counts = c.p;
     /* Assimp reads a vertex or a face from each line after the counts: the lines must be there. */
     while (c.p < c.end && *c.p != '\n')
         c.p++;
@@ -115,7 +174,7 @@ static bool prescan_off(const char *d, size_t size, const model_limits *lim, cha
     if (lines < counts[0] + counts[1])
         return model_fail(why, n, "its header declares %lld vertices and %lld faces, but %lld lines follow", counts[0],
                     counts[1], lines);
-    return true;
+    return off_check_lines(after_counts, d + size, counts[0], counts[1], why, n);
 }
 
 typedef struct ply_property {
@@ -278,7 +337,22 @@ static bool prescan_ply(const char *d, size_t size, const model_limits *lim, cha
         return model_fail(why, n, "the PLY format is not ascii, binary_little_endian or binary_big_endian");
     long long vertices = 0, faces = 0;
     bool have_vertices = false;
+    int vertex_elements = 0, face_elements = 0;
     for (int i = 0; i < elements; i++) {
+        /* Assimp 5.2 sizes its vertex array by the first vertex element and its face array by the
+         * first face element, then writes the entries of a later one at their index in those arrays:
+         * past the end when the later one is longer (a heap overflow inside Assimp, which
+         * AddressSanitizer cannot see: it found it as damage to its own bookkeeping; Assimp's issue
+         * 5729, fixed after 5.2). A triangle strip element writes into the same face array, one
+         * triangle a strip, leaking the rest. */
+        if (strcmp(el[i].name, "tristrips") == 0)
+            return model_fail(why, n, "PLY triangle strips (element tristrips) are not read: Assimp 5.2 keeps one "
+                                      "triangle of each strip");
+        vertex_elements += strcmp(el[i].name, "vertex") == 0;
+        face_elements += strcmp(el[i].name, "face") == 0;
+        if (vertex_elements > 1 || face_elements > 1)
+            return model_fail(why, n, "more than one PLY element %s: Assimp 5.2 writes the second past the end of "
+                                      "the array it sized for the first", el[i].name);
         have_vertices |= strcmp(el[i].name, "vertex") == 0 && el[i].count > 0;
         if (el[i].count > 0 && el[i].property_count == 0)
             return model_fail(why, n, "PLY element %s has %lld entries and no property", el[i].name, el[i].count);

@@ -8,7 +8,8 @@
 #    Shared options on every chapter (--camera's bounds, --script, --scene) and each chapter's own.
 # 2. With a context (skipped, 77, when there is none): the issue's `cd build/bin && 08 --scene
 #    assets/scenes/city.scene`; chapter 13's --samples above the context's own limit (exit 2, the
-#    same words); a framebuffer that does not fit in memory names GL_OUT_OF_MEMORY (not under the
+#    same words); a framebuffer that does not fit in memory names GL_OUT_OF_MEMORY, and a --size
+#    whose runner target alone cannot fit is refused before any target (exit 2; not under the
 #    sanitizers, whose shadow memory a `ulimit -v` would starve).
 set -u
 bin_dir=$(cd "$1" && pwd) src=$(cd "$2" && pwd) sanitized=${3:-}
@@ -130,6 +131,20 @@ if [ "$sanitized" != sanitized ]; then
     if [ "$rc" -eq 1 ] && grep -qF "because of GL_OUT_OF_MEMORY" "$tmp/err"; then
         pass=$((pass + 1)); echo "ok   an 8192x8192 G-buffer without the memory names GL_OUT_OF_MEMORY"
     else fail=$((fail + 1)); echo "FAIL 8192x8192 in 1.5 GB: exit $rc: $(head -3 "$tmp/err")"; fi
+    # 16384x16384 is within llvmpipe's GL limits, but its runner's target alone (8 bytes a pixel,
+    # 2 GiB) cannot fit in 1.5 GB: refused before any target is made, as a bad value (2), one line.
+    if grep -q "renderer=.*llvmpipe" "$tmp/info"; then
+        (ulimit -v 1500000; env -u DISPLAY "$bin_dir/03_fullscreen_phong" --headless --size 16384x16384) \
+            >"$tmp/out" 2>"$tmp/err"
+        rc=$?
+        if [ "$rc" -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] &&
+                grep -qF -- "--size 16384x16384 needs at least 2048 MiB" "$tmp/err" &&
+                grep -qF "(ulimit -v): try a smaller --size" "$tmp/err"; then
+            pass=$((pass + 1)); echo "ok   16384x16384 in 1.5 GB -> 2 before any target is made"
+        else fail=$((fail + 1)); echo "FAIL 16384x16384 in 1.5 GB: exit $rc: $(head -3 "$tmp/err")"; fi
+    else
+        echo "skip the memory estimate: not llvmpipe ($(grep renderer= "$tmp/info"))"
+    fi
 fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
