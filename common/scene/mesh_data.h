@@ -11,7 +11,14 @@
  *                                        the same from bytes (format from name's extension; files
  *                                        the model names are not read): the fuzz target's way in
  *   mesh_data_from_scene(m, s, decl)     the mesh a scene's `mesh` line declares (built-in or
- *                                        file), errors at that line
+ *                                        file), errors at that line; a `model` line's part (part >= 0):
+ *                                        that mesh of the file alone, in the file's own space (the
+ *                                        node's matrix is the object's base), from the import
+ *                                        model_import.c keeps
+ *   mesh_data_put_vertex(m, i, pos, normal, uv, tangent)
+ *                                        write vertex i (tangent: xyz and the handedness w, +-1, of
+ *                                        the bitangent cross(normal, tangent) * w; all 0 when the
+ *                                        file has none); today the format keeps position and normal
  *   mesh_data_destroy(m)
  *   mesh_data_inradius(m)                smallest distance from the origin to a face's plane:
  *                                        scale a volume mesh by r / inradius to contain the sphere r
@@ -46,6 +53,8 @@ bool mesh_data_icosphere(mesh_data *m, int subdivisions);
 bool mesh_data_load(mesh_data *m, const char *path, const char *origin);
 bool mesh_data_load_memory(mesh_data *m, const char *name, const void *data, size_t size, const char *origin);
 bool mesh_data_from_scene(mesh_data *m, const scene *s, const scene_mesh *decl);
+void mesh_data_put_vertex(mesh_data *m, int i, const float pos[3], const float normal[3], const float uv[2],
+                          const float tangent[4]);
 void mesh_data_destroy(mesh_data *m);
 double mesh_data_inradius(const mesh_data *m);
 

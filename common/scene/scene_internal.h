@@ -1,5 +1,6 @@
 /* scene_internal.h - the scene module's inside: the parser state and the helpers its files share (internal:
- * only scene.c, scene_parser.c, scene_directives.c and scene_lights.c include it; everyone else uses scene.h).
+ * only scene.c, scene_parser.c, scene_directives.c, scene_lights.c and scene_model.c include it; everyone
+ * else uses scene.h).
  *
  * scene_parser.c:
  *   scene_parser_fail(p, fmt, ...)                       log "NAME:LINE: message"; returns false
@@ -19,6 +20,10 @@
  *   scene_parser_take_switch(p, what, &off)              read `on` or `off` (off sets *off)
  * scene_directives.c:
  *   scene_parser_run_directive(p)                        parse a tokenized line by its directive
+ *   scene_parser_resolve_model(p, given, out)            a model path, found and checked readable
+ *   scene_parser_take_placement(p, what, o, &seen)       an object's position, rotate_y, scale or cast
+ * scene_model.c:
+ *   scene_parser_parse_model(p)                          the model directive: a glTF 2.0 file's content
  * scene_lights.c:
  *   scene_parser_parse_light(p), scene_parser_parse_spot(p), scene_parser_parse_key(p)
  *                                                        the light, spot and key directives
@@ -77,7 +82,7 @@ typedef struct parser {
     int count; /* tokens on this line */
     int pos;   /* next token to read */
     scene s;
-    int mesh_cap, material_cap, object_cap, light_cap;
+    int mesh_cap, material_cap, object_cap, light_cap, texture_cap;
     name_table mesh_names, material_names;
     int camera_line, ambient_line, falloff_line; /* 0 until given */
     last_kind last;                /* what a "key" line attaches to */
@@ -109,6 +114,9 @@ int scene_parser_take_attribute(parser *p, const char *what, const char *const n
 bool scene_parser_take_switch(parser *p, const char *what, bool *off);
 
 bool scene_parser_run_directive(parser *p);
+bool scene_parser_resolve_model(parser *p, const char *given, char out[SCENE_PATH_MAX]);
+bool scene_parser_take_placement(parser *p, const char *what, scene_object *o, unsigned *seen);
+bool scene_parser_parse_model(parser *p);
 bool scene_parser_parse_light(parser *p);
 bool scene_parser_parse_spot(parser *p);
 bool scene_parser_parse_key(parser *p);
