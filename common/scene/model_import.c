@@ -211,8 +211,9 @@ static bool uri_decode(const char *uri, char *out, size_t n)
  * size are checked from its header; nothing is decoded here. *index: its slot in out->textures. */
 static bool add_texture(build *b, const char *given, bool srgb, int *index)
 {
-    char shown[MODEL_QUOTE_MAX + 8];
-    model_quote(given, shown, sizeof shown);
+    char quoted[MODEL_QUOTE_MAX + 8], shown[MODEL_QUOTE_MAX + 32]; /* "texture 'x.png'", "embedded image 0" */
+    model_quote(given, quoted, sizeof quoted);
+    snprintf(shown, sizeof shown, "texture '%s'", quoted);
     scene_texture t = {.srgb = srgb};
     const unsigned char *bytes = NULL;
     size_t size = 0;
@@ -221,44 +222,42 @@ static bool add_texture(build *b, const char *given, bool srgb, int *index)
         char *end;
         long k = strtol(given + 1, &end, 10);
         if (*end || end == given + 1 || k < 0 || k >= (long)b->sc->mNumTextures)
-            return model_fail(b->why, b->n, "texture '%s': no such embedded image", shown);
+            return model_fail(b->why, b->n, "%s: no such embedded image", shown);
+        snprintf(shown, sizeof shown, "embedded image %ld", k);
         const struct aiTexture *tex = b->sc->mTextures[k];
         if (tex->mHeight != 0 || tex->mWidth == 0 || tex->mWidth > INT32_MAX)
-            return model_fail(b->why, b->n, "embedded image %ld is not an encoded image", k);
+            return model_fail(b->why, b->n, "%s is not an encoded image", shown);
         bytes = (const unsigned char *)tex->pcData, size = tex->mWidth;
         if (snprintf(t.path, sizeof t.path, "%s#%ld", b->path, k) >= (int)sizeof t.path)
-            return model_fail(b->why, b->n, "texture '%s': its name is too long", shown);
+            return model_fail(b->why, b->n, "%s: its name is too long", shown);
         if (!image_kind_ok(bytes, size))
-            return model_fail(b->why, b->n, "embedded image %ld is not a PNG or JPEG image (the course decodes "
-                                            "those two)", k);
+            return model_fail(b->why, b->n, "%s is not a PNG or JPEG image (the course decodes those two)", shown);
         if (!stbi_info_from_memory(bytes, (int)size, &w, &h, &comp))
-            return model_fail(b->why, b->n, "embedded image %ld: its header cannot be read (%s)", k,
-                              stbi_failure_reason());
+            return model_fail(b->why, b->n, "%s: its header cannot be read (%s)", shown, stbi_failure_reason());
     } else {
         char rel[SCENE_PATH_MAX];
         if (given[0] == '/' || strstr(given, "://") || !uri_decode(given, rel, sizeof rel))
-            return model_fail(b->why, b->n, "texture '%s': not a relative path (images are read from beside "
+            return model_fail(b->why, b->n, "%s: not a relative path (images are read from beside "
                                             "the model)", shown);
         const char *slash = strrchr(b->path, '/');
         int dir = slash ? (int)(slash - b->path) + 1 : 0;
         if (snprintf(t.path, sizeof t.path, "%.*s%s", dir, b->path, rel) >= (int)sizeof t.path)
-            return model_fail(b->why, b->n, "texture '%s': its path is too long", shown);
+            return model_fail(b->why, b->n, "%s: its path is too long", shown);
         struct stat st;
         unsigned char head[8] = {0};
         FILE *f = NULL;
         if (stat(t.path, &st) != 0 || !S_ISREG(st.st_mode) || !(f = fopen(t.path, "rb")))
-            return model_fail(b->why, b->n, "texture '%s': no such file", shown);
+            return model_fail(b->why, b->n, "%s: no such file", shown);
         size_t got = fread(head, 1, sizeof head, f);
         fclose(f);
         if (!image_kind_ok(head, got))
-            return model_fail(b->why, b->n, "texture '%s': not a PNG or JPEG image (the course decodes those "
-                                            "two)", shown);
+            return model_fail(b->why, b->n, "%s: not a PNG or JPEG image (the course decodes those two)", shown);
         if (!stbi_info(t.path, &w, &h, &comp))
-            return model_fail(b->why, b->n, "texture '%s': its header cannot be read (%s)", shown,
+            return model_fail(b->why, b->n, "%s: its header cannot be read (%s)", shown,
                               stbi_failure_reason());
     }
     if (w < 1 || h < 1 || w > MODEL_TEXTURE_SIDE_MAX || h > MODEL_TEXTURE_SIDE_MAX)
-        return model_fail(b->why, b->n, "texture '%s': %d x %d texels, more than %d a side", shown, w, h,
+        return model_fail(b->why, b->n, "%s: %d x %d texels, more than %d a side", shown, w, h,
                           MODEL_TEXTURE_SIDE_MAX);
     for (int i = 0; i < b->out->texture_count; i++)
         if (b->out->textures[i].srgb == srgb && strcmp(b->out->textures[i].path, t.path) == 0)
