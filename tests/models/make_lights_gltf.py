@@ -48,7 +48,7 @@ def scene(image_uri):
         "extensionsUsed": ["KHR_lights_punctual"],
         "extensions": {"KHR_lights_punctual": {"lights": [
             {"name": "Bulb", "type": "point", "color": [1.0, 0.9, 0.8], "intensity": 5.0, "range": 10.0},
-            {"name": "Spot", "type": "spot", "color": [1.0, 1.0, 1.0], "intensity": 20.0,
+            {"name": "Spot", "type": "spot", "color": [1.0, 1.0, 1.0], "intensity": 4.0,
              "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.6}},
             {"name": "Sun", "type": "directional", "color": [1.0, 1.0, 1.0], "intensity": 2.0}]}},
         "scene": 0,
