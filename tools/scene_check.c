@@ -9,6 +9,7 @@
  */
 #include "log.h"
 #include "mesh_data.h"
+#include "model_import.h"
 #include "scene.h"
 
 #include <stdio.h>
@@ -37,6 +38,7 @@ static bool check_meshes(const scene *s)
                decl->kind == SCENE_MESH_FILE ? " from " : "", decl->kind == SCENE_MESH_FILE ? decl->path : "");
         mesh_data_destroy(&m);
     }
+    model_import_release(); /* the model files' meshes are built */
     return ok;
 }
 

@@ -16,7 +16,10 @@
  *        the file's Assimp scene, post-processed (model_import.c: IMPORT_STEPS) and checked as above:
  *        imported once and kept until model_import_release or another file's import, so that the
  *        meshes of one file (mesh_data_from_scene, part >= 0) do not import it once each
- *   model_import_release()     drop the kept import (scene_destroy calls it)
+ *   model_import_release()     drop the kept import: once a scene's meshes are built (gpu_scene_create,
+ *                              scene_check do it), or to read a file again that changed within the
+ *                              same clock tick; a kept import is never stale otherwise (its path,
+ *                              size and modification time are checked on every use)
  *
  * Limits, beyond model_file.h's: MODEL_NODES_MAX nodes, MODEL_DEPTH_MAX levels of them,
  * MODEL_OBJECTS_MAX node-mesh pairs, images of at most MODEL_TEXTURE_SIDE_MAX texels a side and

@@ -10,7 +10,6 @@
 #include "scene.h"
 
 #include "log.h"
-#include "model_import.h"
 #include "scene_internal.h"
 
 #include <assert.h>
@@ -247,7 +246,6 @@ void scene_destroy(scene *s)
         free(s->textures[i].data);
     free(s->textures);
     memset(s, 0, sizeof *s);
-    model_import_release(); /* the model files' meshes are built by now */
 }
 
 /* Linear interpolation between keys, held at the first and last key outside their range. */
