@@ -11,6 +11,7 @@
 
 #include <cmocka.h>
 
+#include "light.h"
 #include "mesh_data.h"
 #include "model_import.h"
 #include "scene.h"
@@ -115,6 +116,20 @@ static void test_placement_moves_lights(void **state)
     assert_true(parse_model("lights.gltf", "rotate_y 90 scale 2", &s));
     /* Bulb at (1, 3, 0) in the file's space: scaled (2, 6, 0), a quarter turn about +Y (0, 6, -2). */
     assert_vec3(s.lights[0].position, 0.0f, 6.0f, -2.0f);
+    scene_destroy(&s);
+}
+
+/* --lights N places its lights around where the parts are, node matrices included: the floor
+ * (4 x 4 after its node's scale) placed at x = 10 spans x 8..12 at least. */
+static void test_generated_lights_cover_parts(void **state)
+{
+    (void)state;
+    scene s;
+    assert_true(parse_model("lights.gltf", "position 10 0 0", &s));
+    float lo[3], hi[3];
+    light_generate_bounds(&s, lo, hi);
+    assert_true(lo[0] <= 8.0f && hi[0] >= 12.0f);
+    assert_true(lo[2] <= -2.0f && hi[2] >= 2.0f);
     scene_destroy(&s);
 }
 
@@ -260,6 +275,7 @@ static int group_setup(void **state)
 }
 
 UNIT_TEST_MAIN(group_setup, NULL, cmocka_unit_test(test_lights_gltf_contents),
-               cmocka_unit_test(test_placement_moves_lights), cmocka_unit_test(test_part_mesh),
+               cmocka_unit_test(test_placement_moves_lights), cmocka_unit_test(test_generated_lights_cover_parts),
+               cmocka_unit_test(test_part_mesh),
                cmocka_unit_test(test_kept_import), cmocka_unit_test(test_directive_errors),
                cmocka_unit_test(test_good_samples), cmocka_unit_test(test_refused_samples))
