@@ -6,6 +6,7 @@
 
 #include "log.h"
 #include "model_file.h"
+#include "model_image.h"
 
 #include <assimp/GltfMaterial.h>
 #include <assimp/cimport.h>
@@ -20,14 +21,13 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include <stb_image.h>
-
 /* Assimp's steps after the validated import: triangles, welded vertices, normals where the file has
  * none, and tangents where it has UVs but no tangents. Every import of a model uses these, so a
  * mesh's index (scene_mesh.part) means the same mesh at parse time and when the mesh is built. */
-#define IMPORT_STEPS                                                                                           \
-    (aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |                    \
-     aiProcess_FindDegenerates | aiProcess_SortByPType | aiProcess_FindInvalidData | aiProcess_CalcTangentSpace)
+#define IMPORT_STEPS                                                                                         \
+    (aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |                  \
+     aiProcess_FindDegenerates | aiProcess_SortByPType | aiProcess_FindInvalidData |                         \
+     aiProcess_CalcTangentSpace)
 
 /* ---- the kept import ------------------------------------------------------------------------ */
 
@@ -86,8 +86,9 @@ const struct aiScene *model_import_cached(const char *path, char *why, size_t n)
         return NULL;
     const char *format = model_format_of(path);
     if (!format || (strcmp(format, "gltf") != 0 && strcmp(format, "glb") != 0)) {
-        model_fail(why, n, "the model directive reads glTF 2.0 files (.gltf, .glb): for other formats use "
-                           "'mesh NAME file PATH'");
+        model_fail(why, n,
+                   "the model directive reads glTF 2.0 files (.gltf, .glb): for other formats use "
+                   "'mesh NAME file PATH'");
         return NULL;
     }
     if (strlen(path) >= sizeof kept.path) {
@@ -123,6 +124,7 @@ typedef struct build {
     scene *out;
     int texture_cap, object_cap, light_cap;
     long long texels; /* of the images kept so far */
+    long long bytes;  /* the most an image file may hold (COURSE_MODEL_MAX_BYTES) */
     int nodes;        /* visited so far */
     int directional;  /* lights left out */
     int *slot;        /* per mesh of the file: its index in out->meshes, -1 for points and lines */
@@ -179,97 +181,26 @@ static bool add_meshes(build *b)
 
 /* ---- images --------------------------------------------------------------------------------- */
 
-static bool image_kind_ok(const unsigned char *head, size_t size)
-{
-    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    static const unsigned char jpeg[3] = {0xff, 0xd8, 0xff};
-    return (size >= sizeof png && memcmp(head, png, sizeof png) == 0) ||
-           (size >= sizeof jpeg && memcmp(head, jpeg, sizeof jpeg) == 0);
-}
-
-/* "a%20b.png" -> "a b.png"; false on a broken escape. */
-static bool uri_decode(const char *uri, char *out, size_t n)
-{
-    size_t k = 0;
-    for (const char *c = uri; *c; c++) {
-        if (k + 1 >= n)
-            return false;
-        unsigned v;
-        if (*c == '%') {
-            if (sscanf(c + 1, "%2x", &v) != 1 || !c[1] || !c[2] || v == 0)
-                return false;
-            out[k++] = (char)v, c += 2;
-        } else {
-            out[k++] = *c;
-        }
-    }
-    out[k] = '\0';
-    return true;
-}
-
-/* The image a material names: "*N" (embedded) or a file beside the model. Its kind (PNG or JPEG) and
- * size are checked from its header; nothing is decoded here. *index: its slot in out->textures. */
+/* The image a material names (model_image.c checks it), once per image and colour space; its texels
+ * count towards MODEL_TEXELS_MAX. *index: its slot in out->textures. */
 static bool add_texture(build *b, const char *given, bool srgb, int *index)
 {
-    char quoted[MODEL_QUOTE_MAX + 8], shown[MODEL_QUOTE_MAX + 32]; /* "texture 'x.png'", "embedded image 0" */
-    model_quote(given, quoted, sizeof quoted);
-    snprintf(shown, sizeof shown, "texture '%s'", quoted);
-    scene_texture t = {.srgb = srgb};
-    const unsigned char *bytes = NULL;
-    size_t size = 0;
-    int w = 0, h = 0, comp = 0;
-    if (given[0] == '*') {
-        char *end;
-        long k = strtol(given + 1, &end, 10);
-        if (*end || end == given + 1 || k < 0 || k >= (long)b->sc->mNumTextures)
-            return model_fail(b->why, b->n, "%s: no such embedded image", shown);
-        snprintf(shown, sizeof shown, "embedded image %ld", k);
-        const struct aiTexture *tex = b->sc->mTextures[k];
-        if (tex->mHeight != 0 || tex->mWidth == 0 || tex->mWidth > INT32_MAX)
-            return model_fail(b->why, b->n, "%s is not an encoded image", shown);
-        bytes = (const unsigned char *)tex->pcData, size = tex->mWidth;
-        if (snprintf(t.path, sizeof t.path, "%s#%ld", b->path, k) >= (int)sizeof t.path)
-            return model_fail(b->why, b->n, "%s: its name is too long", shown);
-        if (!image_kind_ok(bytes, size))
-            return model_fail(b->why, b->n, "%s is not a PNG or JPEG image (the course decodes those two)", shown);
-        if (!stbi_info_from_memory(bytes, (int)size, &w, &h, &comp))
-            return model_fail(b->why, b->n, "%s: its header cannot be read (%s)", shown, stbi_failure_reason());
-    } else {
-        char rel[SCENE_PATH_MAX];
-        if (given[0] == '/' || strstr(given, "://") || !uri_decode(given, rel, sizeof rel))
-            return model_fail(b->why, b->n, "%s: not a relative path (images are read from beside "
-                                            "the model)", shown);
-        const char *slash = strrchr(b->path, '/');
-        int dir = slash ? (int)(slash - b->path) + 1 : 0;
-        if (snprintf(t.path, sizeof t.path, "%.*s%s", dir, b->path, rel) >= (int)sizeof t.path)
-            return model_fail(b->why, b->n, "%s: its path is too long", shown);
-        struct stat st;
-        unsigned char head[8] = {0};
-        FILE *f = NULL;
-        if (stat(t.path, &st) != 0 || !S_ISREG(st.st_mode) || !(f = fopen(t.path, "rb")))
-            return model_fail(b->why, b->n, "%s: no such file", shown);
-        size_t got = fread(head, 1, sizeof head, f);
-        fclose(f);
-        if (!image_kind_ok(head, got))
-            return model_fail(b->why, b->n, "%s: not a PNG or JPEG image (the course decodes those two)", shown);
-        if (!stbi_info(t.path, &w, &h, &comp))
-            return model_fail(b->why, b->n, "%s: its header cannot be read (%s)", shown,
-                              stbi_failure_reason());
-    }
-    if (w < 1 || h < 1 || w > MODEL_TEXTURE_SIDE_MAX || h > MODEL_TEXTURE_SIDE_MAX)
-        return model_fail(b->why, b->n, "%s: %d x %d texels, more than %d a side", shown, w, h,
-                          MODEL_TEXTURE_SIDE_MAX);
+    model_image image;
+    if (!model_image_check(b->sc, b->path, given, b->bytes, &image, b->why, b->n))
+        return false;
     for (int i = 0; i < b->out->texture_count; i++)
-        if (b->out->textures[i].srgb == srgb && strcmp(b->out->textures[i].path, t.path) == 0)
+        if (b->out->textures[i].srgb == srgb && strcmp(b->out->textures[i].path, image.path) == 0)
             return *index = i, true;
-    b->texels += (long long)w * h;
+    b->texels += (long long)image.width * image.height;
     if (b->texels > MODEL_TEXELS_MAX)
         return model_fail(b->why, b->n, "its images hold more than %lld texels", MODEL_TEXELS_MAX);
-    if (bytes) {
-        if (!(t.data = malloc(size)))
+    scene_texture t = {.srgb = srgb};
+    memcpy(t.path, image.path, sizeof t.path);
+    if (image.bytes) {
+        if (!(t.data = malloc(image.size)))
             return model_fail(b->why, b->n, "out of memory");
-        memcpy(t.data, bytes, size);
-        t.size = size;
+        memcpy(t.data, image.bytes, image.size);
+        t.size = image.size;
     }
     if (!push(b, (void **)&b->out->textures, &b->out->texture_count, &b->texture_cap, &t, sizeof t)) {
         free(t.data);
@@ -310,17 +241,22 @@ static bool add_map(build *b, unsigned index, const struct aiMaterial *mat, scen
             continue;
         struct aiString file;
         unsigned uv = 0;
-        if (aiGetMaterialTexture(mat, types[k], 0, &file, NULL, &uv, NULL, NULL, NULL, NULL) != aiReturn_SUCCESS)
+        if (aiGetMaterialTexture(mat, types[k], 0, &file, NULL, &uv, NULL, NULL, NULL, NULL) !=
+            aiReturn_SUCCESS)
             return model_fail(b->why, b->n, "material %u: its %s texture cannot be read", index, names[map]);
         if (uv != 0)
-            return model_fail(b->why, b->n, "material %u: its %s texture reads UV set %u (the course reads set "
-                                            "0 only)", index, names[map], uv);
+            return model_fail(b->why, b->n,
+                              "material %u: its %s texture reads UV set %u (the course reads set "
+                              "0 only)",
+                              index, names[map], uv);
         struct aiUVTransform t;
         if (aiGetMaterialUVTransform(mat, _AI_MATKEY_UVTRANSFORM_BASE, types[k], 0, &t) == aiReturn_SUCCESS &&
             (t.mTranslation.x != 0 || t.mTranslation.y != 0 || t.mScaling.x != 1 || t.mScaling.y != 1 ||
              t.mRotation != 0))
-            return model_fail(b->why, b->n, "material %u: its %s texture has a texture transform "
-                                            "(KHR_texture_transform is not supported)", index, names[map]);
+            return model_fail(b->why, b->n,
+                              "material %u: its %s texture has a texture transform "
+                              "(KHR_texture_transform is not supported)",
+                              index, names[map]);
         return add_texture(b, file.data, map == SCENE_MAP_BASE || map == SCENE_MAP_EMISSIVE, &m->maps[map]);
     }
     return true;
@@ -331,13 +267,15 @@ static bool add_materials(build *b)
     int cap = 0;
     for (unsigned i = 0; i < b->sc->mNumMaterials; i++) {
         const struct aiMaterial *mat = b->sc->mMaterials[i];
-        scene_material m = {.specular = 0.0f, .shininess = 32.0f, .opacity = 1.0f, .pbr = true,
-                            .maps = {-1, -1, -1, -1, -1}};
+        scene_material m = {
+            .specular = 0.0f, .shininess = 32.0f, .opacity = 1.0f, .pbr = true, .maps = {-1, -1, -1, -1, -1}};
         part_name(b->path, "material", i, m.name);
         ai_real unused;
         if (aiGetMaterialFloatArray(mat, "$mat.glossinessFactor", 0, 0, &unused, NULL) == aiReturn_SUCCESS)
-            return model_fail(b->why, b->n, "material %u is specular-glossiness (KHR_materials_pbrSpecular"
-                                            "Glossiness): the course reads metallic-roughness only", i);
+            return model_fail(b->why, b->n,
+                              "material %u is specular-glossiness (KHR_materials_pbrSpecular"
+                              "Glossiness): the course reads metallic-roughness only",
+                              i);
         struct aiColor4D base = {1, 1, 1, 1}, emissive = {0, 0, 0, 1};
         if (aiGetMaterialColor(mat, AI_MATKEY_BASE_COLOR, &base) != aiReturn_SUCCESS)
             aiGetMaterialColor(mat, AI_MATKEY_COLOR_DIFFUSE, &base);
@@ -372,8 +310,10 @@ static bool add_materials(build *b)
 /* Assimp's matrices are row-major (a1..a4 the first row); cglm's are columns. */
 static bool to_mat4(const struct aiMatrix4x4 *a, mat4 out)
 {
-    const float rows[4][4] = {{a->a1, a->a2, a->a3, a->a4}, {a->b1, a->b2, a->b3, a->b4},
-                              {a->c1, a->c2, a->c3, a->c4}, {a->d1, a->d2, a->d3, a->d4}};
+    const float rows[4][4] = {{a->a1, a->a2, a->a3, a->a4},
+                              {a->b1, a->b2, a->b3, a->b4},
+                              {a->c1, a->c2, a->c3, a->c4},
+                              {a->d1, a->d2, a->d3, a->d4}};
     bool finite = true;
     for (int r = 0; r < 4; r++)
         for (int c = 0; c < 4; c++)
@@ -396,8 +336,10 @@ static bool add_light(build *b, const struct aiLight *l, mat4 world)
     float rgb[3] = {l->mColorDiffuse.r, l->mColorDiffuse.g, l->mColorDiffuse.b};
     float peak = fmaxf(rgb[0], fmaxf(rgb[1], rgb[2]));
     if (!isfinite(peak) || !(fminf(rgb[0], fminf(rgb[1], rgb[2])) >= 0.0f))
-        return model_fail(b->why, b->n, "light '%.60s': a colour or intensity that is not a finite, non-negative "
-                                        "number", l->mName.data);
+        return model_fail(b->why, b->n,
+                          "light '%.60s': a colour or intensity that is not a finite, non-negative "
+                          "number",
+                          l->mName.data);
     out.intensity = peak;
     for (int k = 0; k < 3 && peak > 0.0f; k++)
         out.color[k] = rgb[k] / peak;
@@ -437,15 +379,18 @@ static bool add_node(build *b, const struct aiNode *node, mat4 parent, int depth
             continue;
         if (b->out->object_count >= MODEL_OBJECTS_MAX)
             return model_fail(b->why, b->n, "it places more than %d meshes", MODEL_OBJECTS_MAX);
-        scene_object o = {.mesh = b->slot[k], .material = (int)b->sc->mMeshes[k]->mMaterialIndex,
-                          .scale = {1, 1, 1}, .has_base = true};
+        scene_object o = {.mesh = b->slot[k],
+                          .material = (int)b->sc->mMeshes[k]->mMaterialIndex,
+                          .scale = {1, 1, 1},
+                          .has_base = true};
         glm_mat4_copy(world, o.base);
         if (!push(b, (void **)&b->out->objects, &b->out->object_count, &b->object_cap, &o, sizeof o))
             return false;
     }
     /* Assimp names a light after the node that carries it. */
     for (unsigned i = 0; i < b->sc->mNumLights; i++)
-        if (strcmp(b->sc->mLights[i]->mName.data, node->mName.data) == 0 && !add_light(b, b->sc->mLights[i], world))
+        if (strcmp(b->sc->mLights[i]->mName.data, node->mName.data) == 0 &&
+            !add_light(b, b->sc->mLights[i], world))
             return false;
     for (unsigned c = 0; c < node->mNumChildren; c++)
         if (!add_node(b, node->mChildren[c], world, depth + 1))
@@ -471,7 +416,10 @@ bool model_import_scene(const char *path, const char *origin, scene *out, char *
     const struct aiScene *sc = model_import_cached(path, why, n);
     if (!sc)
         return false;
-    build b = {.sc = sc, .path = path, .out = out, .why = why, .n = n};
+    model_limits lim;
+    if (!model_limits_get(&lim, why, n))
+        return false;
+    build b = {.sc = sc, .path = path, .out = out, .bytes = lim.bytes, .why = why, .n = n};
     mat4 identity = GLM_MAT4_IDENTITY_INIT;
     bool ok = add_meshes(&b) && add_materials(&b) && add_node(&b, sc->mRootNode, identity, 0);
     free(b.slot);
@@ -483,13 +431,14 @@ bool model_import_scene(const char *path, const char *origin, scene *out, char *
         return false;
     }
     if (b.lines)
-        log_warn("%s: model '%s': %d mesh(es) of points or lines left out (the course draws triangles)", origin,
-                 path, b.lines);
+        log_warn("%s: model '%s': %d mesh(es) of points or lines left out (the course draws triangles)",
+                 origin, path, b.lines);
     if (b.directional)
-        log_warn("%s: model '%s': %d directional light(s) left out (the course has point and spot lights only)",
-                 origin, path, b.directional);
+        log_warn(
+            "%s: model '%s': %d directional light(s) left out (the course has point and spot lights only)",
+            origin, path, b.directional);
     if (sc->mNumAnimations)
-        log_warn("%s: model '%s': %u animation(s) ignored: the scene shows the file's rest pose", origin, path,
-                 sc->mNumAnimations);
+        log_warn("%s: model '%s': %u animation(s) ignored: the scene shows the file's rest pose", origin,
+                 path, sc->mNumAnimations);
     return true;
 }

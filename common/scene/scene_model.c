@@ -36,7 +36,8 @@ static int merge_mesh(parser *p, const scene_mesh *m)
             return i;
     scene_mesh copy = *m;
     copy.line = p->line;
-    scene_mesh *grown = scene_parser_append(p, p->s.meshes, &p->s.mesh_count, &p->mesh_cap, &copy, sizeof copy);
+    scene_mesh *grown =
+        scene_parser_append(p, p->s.meshes, &p->s.mesh_count, &p->mesh_cap, &copy, sizeof copy);
     if (!grown)
         return -1;
     p->s.meshes = grown;
@@ -71,7 +72,8 @@ static bool merge(parser *p, scene *part, const scene_object *place, int *mesh_a
         o.material = material_at[part->objects[i].material];
         o.has_base = true;
         glm_mat4_copy(part->objects[i].base, o.base);
-        scene_object *grown = scene_parser_append(p, p->s.objects, &p->s.object_count, &p->object_cap, &o, sizeof o);
+        scene_object *grown =
+            scene_parser_append(p, p->s.objects, &p->s.object_count, &p->object_cap, &o, sizeof o);
         if (!grown)
             return false;
         p->s.objects = grown;
@@ -89,7 +91,8 @@ static bool merge(parser *p, scene *part, const scene_object *place, int *mesh_a
         mat3 turn;
         glm_mat4_pick3(world, turn);
         glm_mat3_mulv(turn, part->lights[i].direction, l.direction);
-        scene_light *grown = scene_parser_append(p, p->s.lights, &p->s.light_count, &p->light_cap, &l, sizeof l);
+        scene_light *grown =
+            scene_parser_append(p, p->s.lights, &p->s.light_count, &p->light_cap, &l, sizeof l);
         if (!grown)
             return false;
         p->s.lights = grown;
@@ -100,7 +103,8 @@ static bool merge(parser *p, scene *part, const scene_object *place, int *mesh_a
 bool scene_parser_parse_model(parser *p)
 {
     if (scene_parser_at_end(p))
-        return scene_parser_fail(p, "model: missing path (model PATH [position X Y Z] [rotate_y D] [scale S])");
+        return scene_parser_fail(p,
+                                 "model: missing path (model PATH [position X Y Z] [rotate_y D] [scale S])");
     char path[SCENE_PATH_MAX];
     if (!scene_parser_resolve_model(p, p->tok[p->pos++], path))
         return false;

@@ -34,6 +34,7 @@ if(COURSE_FUZZ)
   set(COURSE_FUZZ_SOURCES_scene ${CMAKE_SOURCE_DIR}/common/scene/scene.c ${CMAKE_SOURCE_DIR}/common/scene/scene_parser.c
     ${CMAKE_SOURCE_DIR}/common/scene/scene_directives.c ${CMAKE_SOURCE_DIR}/common/scene/scene_lights.c
     ${CMAKE_SOURCE_DIR}/common/scene/scene_model.c ${CMAKE_SOURCE_DIR}/common/scene/model_import.c
+    ${CMAKE_SOURCE_DIR}/common/scene/model_image.c
     ${CMAKE_SOURCE_DIR}/common/scene/model_file.c ${CMAKE_SOURCE_DIR}/common/scene/model_scan.c
     ${CMAKE_SOURCE_DIR}/common/scene/mesh_data.c
     ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)

@@ -275,7 +275,7 @@ static int group_setup(void **state)
 }
 
 UNIT_TEST_MAIN(group_setup, NULL, cmocka_unit_test(test_lights_gltf_contents),
-               cmocka_unit_test(test_placement_moves_lights), cmocka_unit_test(test_generated_lights_cover_parts),
-               cmocka_unit_test(test_part_mesh),
+               cmocka_unit_test(test_placement_moves_lights),
+               cmocka_unit_test(test_generated_lights_cover_parts), cmocka_unit_test(test_part_mesh),
                cmocka_unit_test(test_kept_import), cmocka_unit_test(test_directive_errors),
                cmocka_unit_test(test_good_samples), cmocka_unit_test(test_refused_samples))
