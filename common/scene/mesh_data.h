@@ -18,7 +18,9 @@
  *   mesh_data_put_vertex(m, i, pos, normal, uv, tangent)
  *                                        write vertex i (tangent: xyz and the handedness w, +-1, of
  *                                        the bitangent cross(normal, tangent) * w; all 0 when the
- *                                        file has none); today the format keeps position and normal
+ *                                        file has none); today the format keeps position and normal.
+ *                                        uv is Assimp's: glTF's v already flipped (1 - v), so v = 0
+ *                                        is the image's bottom row (its last row in the file)
  *   mesh_data_destroy(m)
  *   mesh_data_inradius(m)                smallest distance from the origin to a face's plane:
  *                                        scale a volume mesh by r / inradius to contain the sphere r
