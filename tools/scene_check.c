@@ -9,6 +9,7 @@
  */
 #include "log.h"
 #include "mesh_data.h"
+#include "model_import.h"
 #include "scene.h"
 
 #include <stdio.h>
@@ -37,15 +38,16 @@ static bool check_meshes(const scene *s)
                decl->kind == SCENE_MESH_FILE ? " from " : "", decl->kind == SCENE_MESH_FILE ? decl->path : "");
         mesh_data_destroy(&m);
     }
+    model_import_release(); /* the model files' meshes are built */
     return ok;
 }
 
 static void print_summary(const scene *s)
 {
     const scene_camera *c = &s->camera;
-    printf("%s: %d objects, %d lights, %d meshes, %d materials; camera eye (%g, %g, %g) target (%g, %g, %g) "
-           "fovy %g near %g far %g\n",
-           s->path, s->object_count, s->light_count, s->mesh_count, s->material_count, c->eye[0], c->eye[1],
+    printf("%s: %d objects, %d lights, %d meshes, %d materials, %d textures; camera eye (%g, %g, %g) target (%g, %g, "
+           "%g) fovy %g near %g far %g\n",
+           s->path, s->object_count, s->light_count, s->mesh_count, s->material_count, s->texture_count, c->eye[0], c->eye[1],
            c->eye[2], c->target[0], c->target[1], c->target[2], c->fovy_deg, c->near_plane, c->far_plane);
 }
 

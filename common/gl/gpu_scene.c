@@ -4,6 +4,7 @@
 #include "gl_util.h"
 #include "light.h"
 #include "log.h"
+#include "model_import.h"
 
 #include <float.h>
 #include <math.h>
@@ -42,10 +43,12 @@ bool gpu_scene_create(const scene *src, gpu_scene *out)
     }
     for (int i = 0; i < src->mesh_count; i++) {
         if (!load_mesh(src, &src->meshes[i], &out->meshes[i])) {
+            model_import_release();
             gpu_scene_destroy(out);
             return false;
         }
     }
+    model_import_release(); /* a model file's meshes are all built: its import is not needed again */
     /* Opaque objects into batches (a batch's objects are consecutive: instance k is object first + k);
      * transparent ones into their own list, drawn one by one in the order the frame needs. */
     for (int i = 0; i < src->object_count; i++) {

@@ -137,6 +137,17 @@ void light_generate_bounds(const scene *s, float lo[3], float hi[3])
             bool unit_half = o->mesh >= 0 && o->mesh < s->mesh_count &&
                              (s->meshes[o->mesh].kind == SCENE_MESH_CUBE || s->meshes[o->mesh].kind == SCENE_MESH_PLANE);
             float reach = unit_half ? 0.5f : 1.0f;
+            if (o->has_base) { /* a model's part: its node matrix may move it far from `position` */
+                mat4 world;
+                scene_object_world_at(s, i, 0.0f, world);
+                for (int c = 0; c < 8; c++) {
+                    vec4 corner = {c & 1 ? reach : -reach, c & 2 ? reach : -reach, c & 4 ? reach : -reach, 1.0f};
+                    vec4 placed;
+                    glm_mat4_mulv(world, corner, placed);
+                    widen_bounds(lo, hi, placed);
+                }
+                continue;
+            }
             for (int k = -1; k < o->key_count; k++) {
                 const float *p = k < 0 ? o->position : o->keys[k].position;
                 vec3 a, b;

@@ -20,7 +20,8 @@
  * leaving the scene unchanged. Each light:
  *   position   uniform in light_generate_bounds: the objects' extents (position, keys
  *              included, +- |scale| times 0.5 for cubes and planes, times 1 for spheres and
- *              models) widened by 10% of the box side on each axis, or a 10 x 10 square around the
+ *              models; a model directive's part: the corners of +-1 through its world matrix,
+ *              node matrix included) widened by 10% of the box side on each axis, or a 10 x 10 square around the
  *              camera target when there are no objects; y always from 0.1 to the box top + 1
  *              (at least 1.1)
  *   color      a random hue, saturation 0.7..1, largest component exactly 1; intensity 1

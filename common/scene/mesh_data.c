@@ -3,16 +3,15 @@
 
 #include "log.h"
 #include "model_file.h"
+#include "model_import.h"
 
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static bool mesh_alloc(mesh_data *m, int vertices, int indices)
 {
@@ -342,6 +341,21 @@ static void copy_node(const struct aiScene *sc, const struct aiNode *node, struc
         copy_node(sc, node->mChildren[c], world, m, vbase, ibase);
 }
 
+/* Bounds, tangents where the file gave none, and every coordinate finite; false (the mesh freed) when
+ * one is not. */
+static bool finish(mesh_data *m, const char *path, const char *pre)
+{
+    compute_bounds(m);
+    mesh_data_generate_tangents(m);
+    for (int i = 0; i < m->vertex_count * MESH_VERTEX_FLOATS; i++)
+        if (!isfinite(m->vertices[i])) {
+            log_error("%s: model '%s' has a non-finite vertex coordinate", pre, path);
+            mesh_data_destroy(m);
+            return false;
+        }
+    return true;
+}
+
 /* The steps after the validated import (model_file.c): triangles and welded vertices with normals, and
  * tangents where the mesh has texture coordinates (Assimp computes none without). */
 #define MESH_POST_STEPS                                                                                        \
@@ -373,14 +387,7 @@ static bool load_bytes(mesh_data *m, const char *path, const char *data, size_t 
         int vbase = 0, ibase = 0;
         copy_node(sc, sc->mRootNode, identity, m, &vbase, &ibase);
         m->index_count = ibase;
-        compute_bounds(m);
-        mesh_data_generate_tangents(m);
-        for (int i = 0; ok && i < m->vertex_count * MESH_VERTEX_FLOATS; i++)
-            if (!isfinite(m->vertices[i])) {
-                log_error("%s: model '%s' has a non-finite vertex coordinate", pre, path);
-                mesh_data_destroy(m);
-                ok = false;
-            }
+        ok = finish(m, path, pre);
     }
     aiReleaseImport(sc);
     return ok;
@@ -410,26 +417,14 @@ bool mesh_data_load(mesh_data *m, const char *path, const char *origin)
     if (!load_check(path, pre, &lim))
         return false;
     /* The whole file is read here, within the limit, so what was checked is what Assimp reads. */
-    struct stat st;
-    FILE *f = NULL;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || !(f = fopen(path, "rb"))) {
-        log_error("%s: cannot load model '%s': %s", pre, path, errno && !f ? strerror(errno) : "not a regular file");
+    char why[256];
+    size_t size;
+    char *data = model_read_file(path, &lim, &size, why, sizeof why);
+    if (!data) {
+        log_error("%s: cannot load model '%s': %s", pre, path, why);
         return false;
     }
-    if (st.st_size > lim.bytes) {
-        log_error("%s: cannot load model '%s': %lld bytes, more than the limit of %lld (COURSE_MODEL_MAX_BYTES)", pre,
-                  path, (long long)st.st_size, lim.bytes);
-        fclose(f);
-        return false;
-    }
-    size_t size = (size_t)st.st_size;
-    char *data = malloc(size ? size : 1);
-    bool ok = data && fread(data, 1, size, f) == size;
-    fclose(f);
-    if (!ok)
-        log_error("%s: cannot load model '%s': cannot read its %zu bytes", pre, path, size);
-    else
-        ok = load_bytes(m, path, data, size, true, &lim, pre);
+    bool ok = load_bytes(m, path, data, size, true, &lim, pre);
     free(data);
     return ok;
 }
@@ -449,6 +444,57 @@ void mesh_data_destroy(mesh_data *m)
     memset(m, 0, sizeof *m);
 }
 
+/* Mesh `part` of a model file alone: its vertices as the file has them, with UVs and tangents. */
+static bool load_part(mesh_data *m, const char *path, int part, const char *pre)
+{
+    memset(m, 0, sizeof *m);
+    char why[512];
+    const struct aiScene *sc = model_import_cached(path, why, sizeof why);
+    if (!sc) {
+        log_error("%s: cannot load model '%s': %s", pre, path, why);
+        return false;
+    }
+    const struct aiMesh *mesh = (unsigned)part < sc->mNumMeshes ? sc->mMeshes[part] : NULL;
+    int triangles = 0;
+    for (unsigned f = 0; mesh && f < mesh->mNumFaces; f++)
+        triangles += mesh->mFaces[f].mNumIndices == 3;
+    if (triangles == 0) {
+        log_error("%s: cannot load model '%s': it has no mesh %d with triangles (did the file change?)", pre, path,
+                  part);
+        return false;
+    }
+    if (!mesh_alloc(m, (int)mesh->mNumVertices, 3 * triangles))
+        return false;
+    for (unsigned v = 0; v < mesh->mNumVertices; v++) {
+        const struct aiVector3D *p = &mesh->mVertices[v];
+        struct aiVector3D n = mesh->mNormals ? mesh->mNormals[v] : (struct aiVector3D){0, 1, 0};
+        float len = sqrtf(n.x * n.x + n.y * n.y + n.z * n.z);
+        if (!(len > 1e-20f) || !isfinite(len)) /* as in copy_node: +Y rather than NaN pixels */
+            n = (struct aiVector3D){0, 1, 0}, len = 1;
+        const float pos[3] = {p->x, p->y, p->z}, normal[3] = {n.x / len, n.y / len, n.z / len};
+        float uv[2] = {0, 0}, tangent[4] = {0, 0, 0, 0};
+        if (mesh->mTextureCoords[0])
+            uv[0] = mesh->mTextureCoords[0][v].x, uv[1] = mesh->mTextureCoords[0][v].y;
+        if (mesh->mTangents && mesh->mBitangents) {
+            const struct aiVector3D t = mesh->mTangents[v], b = mesh->mBitangents[v];
+            /* w: whether the bitangent is cross(normal, tangent) or its opposite */
+            float c[3] = {normal[1] * t.z - normal[2] * t.y, normal[2] * t.x - normal[0] * t.z,
+                          normal[0] * t.y - normal[1] * t.x};
+            float w = c[0] * b.x + c[1] * b.y + c[2] * b.z < 0.0f ? -1.0f : 1.0f;
+            if (isfinite(t.x) && isfinite(t.y) && isfinite(t.z))
+                tangent[0] = t.x, tangent[1] = t.y, tangent[2] = t.z, tangent[3] = w;
+        }
+        if (!isfinite(uv[0]) || !isfinite(uv[1]))
+            uv[0] = uv[1] = 0.0f;
+        mesh_data_put_vertex(m, (int)v, pos, normal, uv, tangent);
+    }
+    int k = 0;
+    for (unsigned f = 0; f < mesh->mNumFaces; f++)
+        for (unsigned c = 0; mesh->mFaces[f].mNumIndices == 3 && c < 3; c++)
+            m->indices[k++] = mesh->mFaces[f].mIndices[c];
+    return finish(m, path, pre);
+}
+
 bool mesh_data_from_scene(mesh_data *m, const scene *s, const scene_mesh *decl)
 {
     char origin[SCENE_PATH_MAX + 32];
@@ -457,7 +503,8 @@ bool mesh_data_from_scene(mesh_data *m, const scene *s, const scene_mesh *decl)
     case SCENE_MESH_CUBE: return mesh_data_cube(m);
     case SCENE_MESH_PLANE: return mesh_data_plane(m);
     case SCENE_MESH_SPHERE: return mesh_data_sphere(m, decl->slices, decl->stacks);
-    case SCENE_MESH_FILE: return mesh_data_load(m, decl->path, origin);
+    case SCENE_MESH_FILE:
+        return decl->part < 0 ? mesh_data_load(m, decl->path, origin) : load_part(m, decl->path, decl->part, origin);
     }
     return false;
 }

@@ -11,10 +11,14 @@
  *                                        the same from bytes (format from name's extension; files
  *                                        the model names are not read): the fuzz target's way in
  *   mesh_data_from_scene(m, s, decl)     the mesh a scene's `mesh` line declares (built-in or
- *                                        file), errors at that line
+ *                                        file), errors at that line; a `model` line's part (part >= 0):
+ *                                        that mesh of the file alone, in the file's own space (the
+ *                                        node's matrix is the object's base), from the import
+ *                                        model_import.c keeps
  *   mesh_data_put_vertex(m, i, pos, normal, uv, tangent)
  *                                        write vertex i; uv NULL: 0 0; tangent NULL: w = 0, one to be
- *                                        made by mesh_data_generate_tangents
+ *                                        made by mesh_data_generate_tangents. uv is Assimp's: glTF's v
+ *                                        already flipped (1 - v), so v = 0 is the image's bottom row
  *   mesh_data_generate_tangents(m)       a unit tangent and its handedness for every vertex whose w is
  *                                        0, from its triangles' texture coordinates; where those are
  *                                        degenerate (no UVs, a zero-area UV triangle) any unit vector at

@@ -78,6 +78,32 @@ void model_quote(const char *text, char *out, size_t n)
     out[n ? k : 0] = '\0';
 }
 
+char *model_read_file(const char *path, const model_limits *lim, size_t *size, char *why, size_t n)
+{
+    struct stat st;
+    FILE *f = NULL;
+    errno = 0;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || !(f = fopen(path, "rb"))) {
+        model_fail(why, n, "%s", errno && !f ? strerror(errno) : "not a regular file");
+        return NULL;
+    }
+    if (st.st_size > lim->bytes) {
+        model_fail(why, n, "%lld bytes, more than the limit of %lld (COURSE_MODEL_MAX_BYTES)", (long long)st.st_size,
+                   lim->bytes);
+        fclose(f);
+        return NULL;
+    }
+    *size = (size_t)st.st_size;
+    char *data = malloc(*size ? *size : 1);
+    if (!data || fread(data, 1, *size, f) != *size) {
+        model_fail(why, n, "cannot read its %zu bytes", *size);
+        free(data);
+        data = NULL;
+    }
+    fclose(f);
+    return data;
+}
+
 /* ---- Assimp's files: the model from memory, the files it names from disk, within limits --------- */
 
 typedef struct io_state {

@@ -19,6 +19,10 @@
  *                                      OBJ's .mtl, a glTF's .bin) from disk when `siblings`, each
  *                                      a regular file and all of them within lim->bytes
  *   model_quote(text, out, n)          a message of Assimp's as one printable line, cut short
+ *   model_read_file(path, lim, size, why, n)
+ *                                      the whole of a regular file of at most lim->bytes, malloc'd
+ *                                      (*size bytes), or NULL with *why: what the checks and Assimp
+ *                                      then read is the same bytes
  *
  * Why these bound memory: Assimp's memory grows with the bytes it reads and with the counts it
  * reserves from headers. The bytes are limited here; a count is accepted only when the file has
@@ -52,6 +56,7 @@ bool model_prescan(const char *data, size_t size, const char *format, const mode
 const struct aiScene *model_import(const char *name, const char *data, size_t size, bool siblings,
                                    const model_limits *lim, unsigned post, char *why, size_t n);
 void model_quote(const char *text, char *out, size_t n);
+char *model_read_file(const char *path, const model_limits *lim, size_t *size, char *why, size_t n);
 /* The pre-scan (model_scan.c) and the import (model_file.c) say what is wrong the same way:
  * printf-style into why[n], then false. */
 bool model_fail(char *why, size_t n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));

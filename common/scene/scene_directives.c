@@ -1,6 +1,7 @@
 /* scene_directives.c - one function per scene directive (camera, ambient, material, mesh, object,
  * falloff), each reading the rest of its line into the scene being built, and the dispatch by the
- * line's first word; the lights (light, spot) and their keys are in scene_lights.c. The format and
+ * line's first word; the lights (light, spot) and their keys are in scene_lights.c, the model
+ * directive in scene_model.c. The format and
  * its limits are in docs/scene-format.md; the token readers are in scene_parser.c.
  */
 #include "scene_internal.h"
@@ -303,24 +304,27 @@ static bool take_object_refs(parser *p, scene_object *o)
 enum { OBJECT_POSITION, OBJECT_ROTATE_Y, OBJECT_SCALE, OBJECT_CAST };
 static const char *const OBJECT_ATTRIBUTES[] = {"position", "rotate_y", "scale", "cast", NULL};
 
-static bool take_object_attribute(parser *p, scene_object *o, unsigned *seen)
+/* `what` ("object", "model") starts the messages: "object scale: must be > 0". */
+bool scene_parser_take_placement(parser *p, const char *what, scene_object *o, unsigned *seen)
 {
     int attribute =
-        scene_parser_take_attribute(p, "object", OBJECT_ATTRIBUTES, "position, rotate_y, scale or cast", seen);
+        scene_parser_take_attribute(p, what, OBJECT_ATTRIBUTES, "position, rotate_y, scale or cast", seen);
+    char name[32];
+    snprintf(name, sizeof name, "%s %s", what, attribute >= 0 ? OBJECT_ATTRIBUTES[attribute] : "");
     switch (attribute) {
-    case OBJECT_POSITION: return scene_parser_take_vec3(p, "object position", NUMBER_ANY, o->position);
-    case OBJECT_ROTATE_Y: return scene_parser_take_number(p, "object rotate_y", NUMBER_ANY, &o->rotate_y_deg);
-    case OBJECT_CAST: return scene_parser_take_switch(p, "object cast", &o->cast_off);
+    case OBJECT_POSITION: return scene_parser_take_vec3(p, name, NUMBER_ANY, o->position);
+    case OBJECT_ROTATE_Y: return scene_parser_take_number(p, name, NUMBER_ANY, &o->rotate_y_deg);
+    case OBJECT_CAST: return scene_parser_take_switch(p, name, &o->cast_off);
     case OBJECT_SCALE:
-        if (!scene_parser_take_number(p, "object scale", NUMBER_POSITIVE, &o->scale[0]))
+        if (!scene_parser_take_number(p, name, NUMBER_POSITIVE, &o->scale[0]))
             return false;
         /* "scale S" or "scale X Y Z": a number after the first means the second form. */
         if (!scene_parser_next_is_number(p)) {
             o->scale[1] = o->scale[2] = o->scale[0];
             return true;
         }
-        return scene_parser_take_number(p, "object scale", NUMBER_POSITIVE, &o->scale[1]) &&
-               scene_parser_take_number(p, "object scale", NUMBER_POSITIVE, &o->scale[2]);
+        return scene_parser_take_number(p, name, NUMBER_POSITIVE, &o->scale[1]) &&
+               scene_parser_take_number(p, name, NUMBER_POSITIVE, &o->scale[2]);
     default: return false; /* already reported */
     }
 }
@@ -332,7 +336,7 @@ static bool parse_object(parser *p)
         return false;
     unsigned seen = 0;
     while (!scene_parser_at_end(p))
-        if (!take_object_attribute(p, &o, &seen))
+        if (!scene_parser_take_placement(p, "object", &o, &seen))
             return false;
     scene_object *grown =
         scene_parser_append(p, p->s.objects, &p->s.object_count, &p->object_cap, &o, sizeof o);
@@ -375,6 +379,7 @@ static const struct {
     {"spot", scene_parser_parse_spot},
     {"key", scene_parser_parse_key},
     {"falloff", parse_falloff},
+    {"model", scene_parser_parse_model},
 };
 
 /* The line's first token names the directive; its function reads the rest of the line. */
@@ -385,6 +390,6 @@ bool scene_parser_run_directive(parser *p)
         if (strcmp(directive, DIRECTIVES[i].name) == 0)
             return DIRECTIVES[i].parse(p);
     return scene_parser_fail(
-        p, "unknown directive '%s' (expected camera, ambient, material, mesh, object, light, spot, key or falloff)",
+        p, "unknown directive '%s' (expected camera, ambient, material, mesh, object, model, light, spot, key or falloff)",
         scene_parser_show_token(directive).text);
 }

@@ -1,6 +1,6 @@
 /* scene_internal.h - the scene module's inside: the parser state and the helpers its files share (internal:
- * only scene.c, scene_parser.c, scene_directives.c, scene_materials.c and scene_lights.c include it;
- * everyone else uses scene.h).
+ * only scene.c, scene_parser.c, scene_directives.c, scene_materials.c, scene_lights.c and scene_model.c
+ * include it; everyone else uses scene.h).
  *
  * scene_parser.c:
  *   scene_parser_fail(p, fmt, ...)                       log "NAME:LINE: message"; returns false
@@ -21,8 +21,11 @@
  * scene_directives.c:
  *   scene_parser_run_directive(p)                        parse a tokenized line by its directive
  *   scene_parser_resolve_file(p, what, given, out)       a model or image path, found and readable
+ *   scene_parser_take_placement(p, what, o, &seen)       an object's position, rotate_y, scale or cast
  * scene_materials.c:
  *   scene_parser_take_pbr(p, m)                          the rest of a `material NAME pbr ...` line
+ * scene_model.c:
+ *   scene_parser_parse_model(p)                          the model directive: a glTF 2.0 file's content
  * scene_lights.c:
  *   scene_parser_parse_light(p), scene_parser_parse_spot(p), scene_parser_parse_key(p)
  *                                                        the light, spot and key directives
@@ -115,6 +118,8 @@ bool scene_parser_take_switch(parser *p, const char *what, bool *off);
 bool scene_parser_run_directive(parser *p);
 bool scene_parser_resolve_file(parser *p, const char *what, const char *given, char out[SCENE_PATH_MAX]);
 bool scene_parser_take_pbr(parser *p, scene_material *m);
+bool scene_parser_take_placement(parser *p, const char *what, scene_object *o, unsigned *seen);
+bool scene_parser_parse_model(parser *p);
 bool scene_parser_parse_light(parser *p);
 bool scene_parser_parse_spot(parser *p);
 bool scene_parser_parse_key(parser *p);

@@ -17,18 +17,15 @@ fi
 src=$1 target=$2 seconds=$3 out=$4
 fuzz=$src/tests/fuzz
 case $target in
-    scene) sources="$src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_materials.c $src/common/scene/scene_lights.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
+    scene | model) # the scene parser reads glTF files (the model directive), so both need the model code
+        sources="$src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_materials.c $src/common/scene/scene_lights.c $src/common/scene/scene_model.c $src/common/scene/model_import.c $src/common/scene/model_image.c $src/common/scene/mesh_data.c $src/common/scene/mesh_tangents.c $src/common/scene/model_file.c $src/common/scene/model_scan.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
     cli) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/platform/cli_help.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c $src/common/base/data_dir.c $src/common/base/progress.c" ;;
     script) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/platform/cli_help.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c $src/common/base/data_dir.c $src/common/base/progress.c" ;;
-    model) sources="$src/common/scene/mesh_data.c $src/common/scene/mesh_tangents.c $src/common/scene/model_file.c $src/common/scene/model_scan.c $src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_materials.c $src/common/scene/scene_lights.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
     *) echo "unknown fuzz target '$target'" >&2; exit 2 ;;
 esac
 
 libs="-pthread"
-[ "$target" = model ] && libs="$libs $(pkg-config --libs assimp)"
-# The scene parser reads an image's header with stb_image (common/scene/scene_materials.c).
-stb=""
-case $target in scene|model) stb=$(pkg-config --cflags stb); libs="$libs $(pkg-config --libs stb)" ;; esac
+case $target in scene | model) libs="$libs $(pkg-config --libs assimp stb)" ;; esac
 cc=${FUZZ_CC:-clang}
 if ! command -v "$cc" >/dev/null 2>&1; then
     echo "skip: $cc not found (the fuzz targets need clang's libFuzzer)"
@@ -44,7 +41,7 @@ probe='int LLVMFuzzerTestOneInput(const char *d, long n) { (void)d; return (int)
 # shellcheck disable=SC2086  # $sources is a list
 if ! "$cc" -std=c11 -g -O1 -D_POSIX_C_SOURCE=200809L -fsanitize=fuzzer,address,undefined \
         -fno-sanitize-recover=undefined -fno-omit-frame-pointer $layers \
-        $(pkg-config --cflags cglm 2>/dev/null) $stb -o "$bin" "$fuzz/fuzz_$target.c" $sources $libs -lm \
+        $(pkg-config --cflags cglm stb 2>/dev/null) -o "$bin" "$fuzz/fuzz_$target.c" $sources $libs -lm \
         2>"$work/cc.log"; then
     if grep -q "fuzzer" "$work/cc.log" &&
             ! echo "$probe" | "$cc" -x c -fsanitize=fuzzer -o "$work/probe" - 2>/dev/null; then

@@ -15,3 +15,12 @@ foreach(set course assimp)
             ${CMAKE_SOURCE_DIR} ${set})
   set_tests_properties(bad.models_${set} PROPERTIES LABELS "unit;sanitize" SKIP_RETURN_CODE 77)
 endforeach()
+
+# The same through the model directive (tests/bad/gltf.expect): the course's glTF files and broken
+# variants, and every glTF 2.0 file of assimp-testmodels, good ones with their counts.
+foreach(set course assimp)
+  add_test(NAME bad.gltf_${set}
+    COMMAND ${BASH} ${CMAKE_CURRENT_SOURCE_DIR}/robust/run_bad_models.sh $<TARGET_FILE:scene_check>
+            ${CMAKE_SOURCE_DIR} ${set} model)
+  set_tests_properties(bad.gltf_${set} PROPERTIES LABELS "unit;sanitize" SKIP_RETURN_CODE 77)
+endforeach()
