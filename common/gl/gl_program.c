@@ -243,7 +243,8 @@ static GLuint link(const GLuint *stages, int count, const char *what)
         glUseProgram(p);
         glUniform1i(srgb, SHADER_UNIT_MAPS_SRGB);
         glUniform1i(linear, SHADER_UNIT_MAPS_LINEAR);
-        glUseProgram((GLuint)current);
+        /* the one in use before, unless it was deleted while in use (it is gone now) */
+        glUseProgram(current && glIsProgram((GLuint)current) ? (GLuint)current : 0);
     }
     return p;
 }
