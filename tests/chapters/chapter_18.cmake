@@ -54,6 +54,19 @@ function(chapter_18_tests)
     set_tests_properties(agree.18_hard_${name} PROPERTIES LABELS "golden;hard")
   endforeach()
 
+  # The keys, driven by a --script: a number key is its view, + and - the exposure, Y the ambient, L and J
+  # move every light and back.
+  add_test(NAME window.18_pbr_keys
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/chapters/run_pbr_keys.sh $<TARGET_FILE:imgdiff> ${COURSE_TEST_OUT}
+            $<TARGET_FILE:${C}> ${A}/pbr_teapots.scene
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(window.18_pbr_keys PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  # --help (and F1) lists the chapter's keys, and not the shared - and + it takes over.
+  add_test(NAME chapters.18_help_keys COMMAND ${C} --help WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.18_help_keys PROPERTIES LABELS golden
+    PASS_REGULAR_EXPRESSION "1-7 +view: lit, albedo.*\n  - +halve the exposure.*IJKL +move every light"
+    FAIL_REGULAR_EXPRESSION "halve the generated lights")
+
   # The light pre-pass cannot sum a metallic-roughness highlight: refused, exit 2, with why.
   if(TARGET 15_light_prepass)
     add_test(NAME chapters.18_prepass_refuses COMMAND 15_light_prepass --headless --frames 1 ${PBR}
