@@ -18,7 +18,7 @@
 
 extern const app_desc chapter_00, chapter_01, chapter_02, chapter_03, chapter_04, chapter_05, chapter_06,
     chapter_07, chapter_08, chapter_09, chapter_10, chapter_11, chapter_12, chapter_13, chapter_14, chapter_15,
-    chapter_16, chapter_17;
+    chapter_16, chapter_17, chapter_19;
 
 /* Chapter 07's frame with a G-buffer of any layout, reversed-Z included (the G-buffer sweep and the
  * tests): geometry pass into g, the volumes summed in dv with how's accumulation format and view (its

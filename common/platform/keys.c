@@ -49,6 +49,8 @@ static const key_binding table[] = {
     {'K', "K", "14", KEY_ACTION_CHAPTER, "shadows on / off (off: every light unshadowed, chapter 11's picture)"},
     {'B', "B", "15", KEY_ACTION_CHAPTER, "light buffer's specular: rgb (two targets, forward's picture) or mono (one channel)"},
     {'O', "O", "17", KEY_ACTION_CHAPTER, "ambient occlusion on / off (off: chapter 11's picture)"},
+    {'I', "I", "19", KEY_ACTION_CHAPTER, "image-based light from the probes on / off (off: chapter 11's picture)"},
+    {'U', "U", "19", KEY_ACTION_CHAPTER, "capture every probe again (after the lights moved)"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])
