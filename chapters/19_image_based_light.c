@@ -29,6 +29,7 @@
 #include "ibl_probes.h"
 #include "log.h"
 
+#include <stdio.h>
 #include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
@@ -150,6 +151,9 @@ static bool frame(app *a)
     if (!capture(&a->gs))
         return false;
     ibl_probes_pick(&state.probes, a->gs.view.eye);
+    snprintf(a->overlay_lines, sizeof a->overlay_lines, "probes: %d, %d picked; captured in %.0f ms, %.1f MiB",
+             state.probes.count, state.probes.picked_count, state.probes.capture_ms,
+             ibl_probes_bytes(&state.probes) / 1048576.0);
     if (!app_view_is(a, "lit"))
         return draw_view(a);
     return app_renderer_is(a, "deferred") ? frame_deferred(a)

@@ -38,18 +38,6 @@ vec3 ibl_irradiance(int i, vec3 n)
     return max(e, vec3(0.0));
 }
 
-// GLSL 3.30 indexes an array of samplers only with a constant: one sampler per slot.
-vec3 ibl_prefiltered(int i, vec3 r, float lod)
-{
-    if (i == 0)
-        return textureLod(u_probe_specular0, r, lod).rgb;
-    if (i == 1)
-        return textureLod(u_probe_specular1, r, lod).rgb;
-    if (i == 2)
-        return textureLod(u_probe_specular2, r, lod).rgb;
-    return textureLod(u_probe_specular3, r, lod).rgb;
-}
-
 float ibl_roughness(float shininess) { return pow(2.0 / (shininess + 2.0), 0.25); }
 
 // The probes' two terms at p before the material, blended: irradiance (E / pi) and the prefiltered
@@ -70,21 +58,32 @@ vec3 ibl_dominant(vec3 n, vec3 v, float roughness)
     return normalize(mix(n, r, s * (sqrt(s) + a)));
 }
 
+// Probe slot i's share at p, added to t (weight w_i, its irradiance and its prefiltered radiance
+// along r). GLSL 3.30 indexes an array of samplers only with a constant, so each slot has its own
+// sampler, passed in: one lookup per slot, where a branch per sampler would cost four on a SIMD rasteriser.
+void ibl_add(int i, samplerCube specular, vec3 p, vec3 n, vec3 r, float lod, inout ibl_terms t, inout float best)
+{
+    if (i >= u_probe_count)
+        return;
+    float w = ibl_weight(i, p);
+    if (w <= 0.0)
+        return;
+    t.irradiance += w * ibl_irradiance(i, n);
+    t.prefiltered += w * textureLod(specular, r, lod).rgb;
+    t.coverage += w;
+    if (w > best)
+        best = w, t.strongest = i;
+}
+
 ibl_terms ibl_gather(vec3 p, vec3 n, vec3 v, float roughness)
 {
     ibl_terms t = ibl_terms(vec3(0.0), vec3(0.0), 0.0, -1);
     vec3 r = ibl_dominant(n, v, roughness);
-    float best = 0.0;
-    for (int i = 0; i < u_probe_count; i++) {
-        float w = ibl_weight(i, p);
-        if (w <= 0.0)
-            continue;
-        t.irradiance += w * ibl_irradiance(i, n);
-        t.prefiltered += w * ibl_prefiltered(i, r, roughness * u_probe_lods);
-        t.coverage += w;
-        if (w > best)
-            best = w, t.strongest = i;
-    }
+    float lod = roughness * u_probe_lods, best = 0.0;
+    ibl_add(0, u_probe_specular0, p, n, r, lod, t, best);
+    ibl_add(1, u_probe_specular1, p, n, r, lod, t, best);
+    ibl_add(2, u_probe_specular2, p, n, r, lod, t, best);
+    ibl_add(3, u_probe_specular3, p, n, r, lod, t, best);
     float norm = max(t.coverage, 1.0);
     t.irradiance /= norm, t.prefiltered /= norm;
     return t;
