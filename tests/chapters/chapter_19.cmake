@@ -35,11 +35,12 @@ function(chapter_19_tests)
     --renderer forward --scene ${S}/teapots_probes.scene)
   course_agreement_test(19_vs_forward_plus 1 0.0001 ${C} VS ${C} --renderer forward-plus)
 
-  # Off, it is chapter 11's picture to the byte; outside every probe's radius too (the fallback);
-  # on, it is not.
+  # Off, it is chapter 11's picture to the byte; outside every probe's radius too (the fallback), and
+  # on a scene without probes; on, it is not.
   course_agreement_test(19_off_is_11 0 0 ${C} --ibl off VS 11_clustered)
   course_agreement_test(19_outside_is_11 0 0 ${C} --scene ${S}/ibl_outside.scene VS 11_clustered
     --scene ${S}/ibl_outside.scene)
+  course_agreement_test(19_no_probes_is_11 0 0 ${C} --scene ${A}/spots.scene VS 11_clustered --scene ${A}/spots.scene)
   course_agreement_test(19_on_differs 1 0.0001 ${C} VS 11_clustered)
   set_tests_properties(agree.19_on_differs PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
 
