@@ -196,6 +196,9 @@ static void cleanup(app *a)
     gl_program_destroy(&state.view_program);
 }
 
+/* The GPU memory the probes and the table take (the benchmark's ambient rows). */
+long chapter_19_probe_bytes(void) { return ibl_probes_bytes(&state.probes); }
+
 const app_desc chapter_19 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
                              .key = key, .draw_forward = draw_forward};
 

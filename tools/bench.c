@@ -17,7 +17,9 @@
  *   bench_state      options, machine, rows    bench_error    a picture's error against the exact one
  *   bench_report     bench.csv and bench.md    bench_plots    the gnuplot script and plots
  *   bench_gbuffer    the G-buffer layouts: bytes, time and precision (--gbuffer-sweep)
+ *   bench_ambient    SSAO and image-based light against the lighting pass (--ambient-sweep)
  */
+#include "bench/bench_ambient.h"
 #include "bench/bench_gbuffer.h"
 #include "bench/bench_measure.h"
 #include "bench/bench_options.h"
@@ -40,7 +42,7 @@ static bool write_outputs(const bench_state *st)
 {
     return bench_report_write_csv(st) && bench_report_write_md(st) &&
            (!bench_gbuffer_enabled() || bench_gbuffer_write_csv(st)) &&
-           (!st->opt.plots || bench_gbuffer_only() || bench_plots_make(st));
+           (!st->opt.plots || bench_gbuffer_only() || bench_ambient_only() || bench_plots_make(st));
 }
 
 /* What the run will do and about how long it takes, measured on the 2-core llvmpipe machine the
@@ -90,8 +92,9 @@ int main(int argc, char **argv)
     bench_renderers *br = NULL;
     bool ok = bench_measure_create(o->width, o->height, &m) &&
               bench_renderers_create(o->width, o->height, &br) &&
-              (bench_gbuffer_only() || bench_run_all(&st, br, &m)) &&
-              (!bench_gbuffer_enabled() || bench_gbuffer_run(&st, br, &m));
+              (bench_gbuffer_only() || bench_ambient_only() || bench_run_all(&st, br, &m)) &&
+              (!bench_gbuffer_enabled() || bench_ambient_only() || bench_gbuffer_run(&st, br, &m)) &&
+              (!bench_ambient_enabled() || bench_ambient_run(o));
     rc = ok ? EXIT_CODE_OK : EXIT_CODE_RUNTIME;
     if (ok)
         fprintf(stderr, "bench: %d cases in %.1f s\n", st.case_index, (bench_measure_now_ms() - t0) / 1000.0);

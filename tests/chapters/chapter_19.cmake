@@ -20,19 +20,19 @@ function(chapter_19_tests)
   foreach(view probe irradiance specular)
     course_golden_test(19_image_based_light_${view} ${C} 1 0.0001 --view ${view})
   endforeach()
-  course_golden_test(19_image_based_light_teapots_probe ${C} 1 0.0001 --view probe --scene ${S}/teapots_probes.scene)
+  course_golden_test(19_image_based_light_teapots_probe ${C} 1 0.0001 --view probe --scene ${A}/teapots_probes.scene)
   course_golden_test(19_image_based_light_size32 ${C} 1 0.0001 --view specular --probe-size 32)
 
   # Forward gets it too: deferred, forward and Forward+ agree on the lit picture.
-  foreach(case "default|" "teapots_cutoff0|--scene@${S}/teapots_probes.scene@--cutoff@0" "800|--size@800x600"
+  foreach(case "default|" "teapots_cutoff0|--scene@${A}/teapots_probes.scene@--cutoff@0" "800|--size@800x600"
                "inside|--scene@${S}/ibl_inside.scene")
     course_case("${case}" name args)
     course_agreement_test(19_vs_forward_${name} 1 0.0001 ${C} ${args} VS ${C} --renderer forward ${args})
   endforeach()
   # Teapots at the default cut-off: 9 pixels of 76,800 (max 7/255 at (37,73)) on a light's hard
   # cut-off, the pixels chapters 11, 15 and 17 leave there (tests/chapters/chapter_17.cmake), hence 0.02 %.
-  course_agreement_test(19_vs_forward_teapots 1 0.0002 ${C} --scene ${S}/teapots_probes.scene VS ${C}
-    --renderer forward --scene ${S}/teapots_probes.scene)
+  course_agreement_test(19_vs_forward_teapots 1 0.0002 ${C} --scene ${A}/teapots_probes.scene VS ${C}
+    --renderer forward --scene ${A}/teapots_probes.scene)
   course_agreement_test(19_vs_forward_plus 1 0.0001 ${C} VS ${C} --renderer forward-plus)
 
   # Off, it is chapter 11's picture to the byte; outside every probe's radius too (the fallback), and
