@@ -9,9 +9,10 @@
  * shaders/ibl.glsl); chapter 00's forward renderer, with the same define, and once more without it
  * as the probes' camera.
  * New here (chapters/ibl_probes.c, chapters/ibl_sh.c):
- *   at start, and on key U: the split-sum table (ibl_brdf.frag, once); per probe, six forward
- *      renders into an RGBA16F cube, its irradiance as 9 spherical-harmonics coefficients projected
- *      on the CPU, its prefiltered mip chain by GGX importance sampling (ibl_prefilter.frag)
+ *   at start, the split-sum table (ibl_brdf.frag, once); at the first frame and on key U, per
+ *      probe: six forward renders into an RGBA16F cube, its irradiance as 9 spherical-harmonics
+ *      coefficients projected on the CPU, its prefiltered mip chain by GGX importance sampling
+ *      (ibl_prefilter.frag)
  *   per frame: the IBL_MAX_PICKED most important probes (radius over distance to the eye), blended
  *      per pixel in the shading pass, weight (1 - (d / R)^2)^2; outside every radius, the constant
  * Views: lit; probe, which probe lights each pixel; irradiance; specular (ibl_view.frag, from the

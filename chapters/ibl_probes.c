@@ -86,7 +86,8 @@ static bool capture_face(ibl *b, const gpu_scene *gs, const ibl_probe *p, int f)
     float centre[3] = {p->sphere.position[0], p->sphere.position[1], p->sphere.position[2]};
     vec3 target = {centre[0] + face_forward[f][0], centre[1] + face_forward[f][1], centre[2] + face_forward[f][2]};
     float near_plane = 0.02f, far_plane = gs->src->camera.far_plane;
-    glm_lookat(centre, target, (float *)face_up[f], v->view);
+    vec3 up = {face_up[f][0], face_up[f][1], face_up[f][2]};
+    glm_lookat(centre, target, up, v->view);
     glm_perspective(glm_rad(90.0f), 1.0f, near_plane, far_plane, v->proj);
     glm_mat4_mul(v->proj, v->view, v->view_proj);
     glm_mat4_inv(v->proj, v->inv_proj), glm_mat4_inv(v->view, v->inv_view), glm_mat4_inv(v->view_proj, v->inv_view_proj);
@@ -170,12 +171,12 @@ bool ibl_probes_capture(ibl *b, const gpu_scene *gs)
     int levels_all = 1;
     while ((b->desc.size >> levels_all) > 0)
         levels_all++;
+    for (; b->count < s->probe_count; b->count++) { /* the textures once; a capture again reuses them */
+        b->probes[b->count].radiance = cube_create(b->desc.size, levels_all);
+        b->probes[b->count].specular = cube_create(b->desc.size, b->desc.levels);
+    }
     for (int i = 0; i < s->probe_count; i++) {
         ibl_probe *p = &b->probes[i];
-        if (i >= b->count) {
-            p->radiance = cube_create(b->desc.size, levels_all);
-            p->specular = cube_create(b->desc.size, b->desc.levels);
-        }
         p->sphere = s->probes[i];
         bool ok = true;
         for (int f = 0; f < 6 && ok; f++)
@@ -186,7 +187,6 @@ bool ibl_probes_capture(ibl *b, const gpu_scene *gs)
         if (!ok || !project_irradiance(p, b->desc.size) || !prefilter(b, p))
             return false;
     }
-    b->count = s->probe_count;
     glFinish();
     clock_gettime(CLOCK_MONOTONIC, &t1);
     b->capture_ms = (t1.tv_sec - t0.tv_sec) * 1e3 + (t1.tv_nsec - t0.tv_nsec) * 1e-6;

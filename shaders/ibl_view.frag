@@ -4,6 +4,7 @@
 //               probes cover less (black: outside every radius, the constant ambient)
 //   irradiance  the probes' irradiance E / pi alone (a white Lambertian surface's ambient)
 //   specular    the probes' specular term alone: prefiltered radiance times (F0 A + B)
+// variants: IMAGE_BASED_LIGHT 1
 #include "shading.glsl"
 #include "gbuffer_read.glsl"
 
