@@ -18,7 +18,11 @@
 
 extern const app_desc chapter_00, chapter_01, chapter_02, chapter_03, chapter_04, chapter_05, chapter_06,
     chapter_07, chapter_08, chapter_09, chapter_10, chapter_11, chapter_12, chapter_13, chapter_14, chapter_15,
-    chapter_16, chapter_17, chapter_18;
+    chapter_16, chapter_17, chapter_18, chapter_19;
+
+/* Chapter 19's probes and split-sum table: their GPU memory, in bytes, while the chapter is open (the
+ * benchmark's ambient rows, tools/bench/bench_ambient.c). */
+long chapter_19_probe_bytes(void);
 
 /* Chapter 07's frame with a G-buffer of any layout, reversed-Z included (the G-buffer sweep and the
  * tests): geometry pass into g, the volumes summed in dv with how's accumulation format and view (its

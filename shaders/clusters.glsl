@@ -59,7 +59,7 @@ int cluster_loop_count(ivec2 range)
 // cluster's list through the one shading function.
 vec3 cluster_shade(ivec2 range, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess, float occlusion)
 {
-    vec3 c = shade_ambient(albedo * occlusion);
+    vec3 c = shade_ambient_at(p, n, v, albedo, specular, shininess, occlusion);
     int count = cluster_loop_count(range);
     for (int k = 0; k < count; k++) {
         int i = range.y < 0 ? k : texelFetch(u_cluster_lights, range.x + k).r;

@@ -229,6 +229,21 @@ vec3 shade_ambient(vec3 albedo)
     return u_ambient * albedo;
 }
 
+// The ambient term where the surface is known: shade_ambient(), or in a program built with
+// IMAGE_BASED_LIGHT (chapter 19) the light of the probes around p (ibl.glsl).
+#ifdef IMAGE_BASED_LIGHT
+#include "ibl.glsl"
+#endif
+
+vec3 shade_ambient_at(vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess, float occlusion)
+{
+#ifdef IMAGE_BASED_LIGHT
+    return occlusion * ibl_ambient(p, n, v, albedo, specular, shininess);
+#else
+    return shade_ambient(albedo * occlusion);
+#endif
+}
+
 // Linear [0,1] to the exact sRGB curve; the 8-bit target then rounds to 255 levels.
 vec3 display_encode(vec3 c)
 {

@@ -19,7 +19,9 @@
  *   bench_report     bench.csv and bench.md    bench_plots    the gnuplot script and plots
  *   bench_gbuffer    the G-buffer layouts: bytes, time and precision (--gbuffer-sweep)
  *   bench_storage    what to store per pixel: bytes counted, passes timed, error (--storage)
+ *   bench_ambient    SSAO and image-based light against the lighting pass (--ambient-sweep)
  */
+#include "bench/bench_ambient.h"
 #include "bench/bench_gbuffer.h"
 #include "bench/bench_measure.h"
 #include "bench/bench_options.h"
@@ -41,19 +43,25 @@
 
 /* --gbuffer-sweep only or --storage only: the main sweep does not run, nor the other of the two
  * unless it says `only` too. */
+/* Each `only` option runs its part and the others' `only` parts, and nothing else. */
 static bool main_sweep_skipped(void)
 {
-    return bench_gbuffer_only() || bench_storage_only();
+    return bench_gbuffer_only() || bench_storage_only() || bench_ambient_only();
 }
 
 static bool gbuffer_sweep_runs(void)
 {
-    return bench_gbuffer_enabled() && (bench_gbuffer_only() || !bench_storage_only());
+    return bench_gbuffer_enabled() && (bench_gbuffer_only() || !main_sweep_skipped());
 }
 
 static bool storage_table_runs(void)
 {
-    return bench_storage_enabled() && (bench_storage_only() || !bench_gbuffer_only());
+    return bench_storage_enabled() && (bench_storage_only() || !main_sweep_skipped());
+}
+
+static bool ambient_sweep_runs(void)
+{
+    return bench_ambient_enabled() && (bench_ambient_only() || !main_sweep_skipped());
 }
 
 static bool write_outputs(const bench_state *st)
@@ -114,7 +122,8 @@ int main(int argc, char **argv)
               bench_renderers_create(o->width, o->height, &br) &&
               (main_sweep_skipped() || bench_run_all(&st, br, &m)) &&
               (!gbuffer_sweep_runs() || bench_gbuffer_run(&st, br, &m)) &&
-              (!storage_table_runs() || bench_storage_run(&st, br, &m));
+              (!storage_table_runs() || bench_storage_run(&st, br, &m)) &&
+              (!ambient_sweep_runs() || bench_ambient_run(o));
     rc = ok ? EXIT_CODE_OK : EXIT_CODE_RUNTIME;
     if (ok)
         fprintf(stderr, "bench: %d cases in %.1f s\n", st.case_index, (bench_measure_now_ms() - t0) / 1000.0);

@@ -72,7 +72,12 @@
     X(UNIT_MAPS_LINEAR, 16)  /* the data images': past every other unit (chapter 16 reads both) */     \
     X(AO_MAX_SAMPLES, 64)    /* the most SSAO kernel directions (--ao-samples) */                      \
     X(AO_STEPS, 4)           /* points marched along each kernel direction, r/4 apart */               \
-    X(AO_NOISE_SIZE, 4)      /* the rotation noise tile: 4 x 4 pixels, removed by a blur that wide */
+    X(AO_NOISE_SIZE, 4)      /* the rotation noise tile: 4 x 4 pixels, removed by a blur that wide */  \
+    X(UNIT_IBL_BRDF, 12)     /* chapter 19: the split-sum table (n.v, roughness) -> F0 scale, bias */  \
+    X(UNIT_IBL_PROBES, 8)    /* chapter 19: the picked probes' prefiltered cubes, IBL_MAX_PICKED units \
+                                (chapter 14's and 16's units: not in chapter 19) */               \
+    X(IBL_MAX_PICKED, 4)     /* chapter 19: the probes blended per pixel, picked per frame */          \
+    X(IBL_SH_COEFFS, 9)      /* chapter 19: spherical harmonics coefficients per probe (bands 0-2) */
 
 #define SHADER_LAYOUT_ENUM(name, value) SHADER_##name = (value),
 enum { SHADER_LAYOUT(SHADER_LAYOUT_ENUM) };

@@ -57,6 +57,8 @@ static const key_binding table[] = {
     {'I', "IJKL", "18", KEY_ACTION_CHAPTER, "move every light together: away, left, nearer, right (-z, -x, +z, +x)"},
     {KEY_UP, "Up", "18", KEY_ACTION_CHAPTER, "move every light together up"},
     {KEY_DOWN, "Down", "18", KEY_ACTION_CHAPTER, "move every light together down"},
+    {'I', "I", "19", KEY_ACTION_CHAPTER, "image-based light from the probes on / off (off: chapter 11's picture)"},
+    {'U', "U", "19", KEY_ACTION_CHAPTER, "capture every probe again (after the lights moved)"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])

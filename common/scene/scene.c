@@ -245,6 +245,7 @@ void scene_destroy(scene *s)
     for (int i = 0; i < s->texture_count; i++)
         free(s->textures[i].data);
     free(s->textures);
+    free(s->probes);
     memset(s, 0, sizeof *s);
 }
 

@@ -121,6 +121,14 @@ typedef struct scene_light {
     bool shadow_off;            /* `shadow off`: never shadowed (chapter 14); default false */
 } scene_light;
 
+/* A light probe (chapter 19): the scene's radiance is captured at `position`, and lights the
+ * surfaces within `radius` of it (docs/19_image_based_light.md). */
+#define SCENE_PROBE_MAX 16
+typedef struct scene_probe {
+    vec3 position;
+    float radius; /* > 0 */
+} scene_probe;
+
 typedef struct scene {
     char path[SCENE_PATH_MAX]; /* as given to scene_load, or the name given to scene_parse_string */
     scene_camera camera;
@@ -136,6 +144,8 @@ typedef struct scene {
     int light_count;
     scene_texture *textures; /* the images materials sample (scene_material.maps) */
     int texture_count;
+    scene_probe *probes; /* directive `probe`, at most SCENE_PROBE_MAX */
+    int probe_count;
 } scene;
 
 bool scene_load(const char *path, scene *out);

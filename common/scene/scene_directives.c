@@ -368,6 +368,28 @@ static bool parse_falloff(parser *p)
     return true;
 }
 
+/* probe X Y Z radius R: a light probe (chapter 19), at most SCENE_PROBE_MAX. */
+static bool parse_probe(parser *p)
+{
+    scene_probe probe = {0};
+    if (p->s.probe_count >= SCENE_PROBE_MAX)
+        return scene_parser_fail(p, "probe: more than %d probes", SCENE_PROBE_MAX);
+    if (!scene_parser_take_vec3(p, "probe", NUMBER_ANY, probe.position))
+        return false;
+    if (scene_parser_at_end(p) || strcmp(p->tok[p->pos], "radius") != 0)
+        return scene_parser_fail(p, "probe: expected 'radius R' after the position");
+    p->pos++;
+    if (!scene_parser_take_number(p, "probe radius", NUMBER_POSITIVE, &probe.radius) ||
+        !scene_parser_expect_end(p, "probe"))
+        return false;
+    scene_parser_start_keys(p, LAST_NONE); /* a probe does not move: no key lines after it */
+    scene_probe *grown = scene_parser_append(p, p->s.probes, &p->s.probe_count, &p->probe_cap, &probe, sizeof probe);
+    if (!grown)
+        return false;
+    p->s.probes = grown;
+    return true;
+}
+
 /* ---- dispatch ---------------------------------------------------------------------------- */
 
 static const struct {
@@ -380,6 +402,7 @@ static const struct {
     {"key", scene_parser_parse_key},
     {"falloff", parse_falloff},
     {"model", scene_parser_parse_model},
+    {"probe", parse_probe},
 };
 
 /* The line's first token names the directive; its function reads the rest of the line. */
@@ -390,6 +413,7 @@ bool scene_parser_run_directive(parser *p)
         if (strcmp(directive, DIRECTIVES[i].name) == 0)
             return DIRECTIVES[i].parse(p);
     return scene_parser_fail(
-        p, "unknown directive '%s' (expected camera, ambient, material, mesh, object, model, light, spot, key or falloff)",
+        p, "unknown directive '%s' (expected camera, ambient, material, mesh, object, model, light, spot, key, falloff "
+           "or probe)",
         scene_parser_show_token(directive).text);
 }

@@ -84,7 +84,7 @@ typedef struct parser {
     int count; /* tokens on this line */
     int pos;   /* next token to read */
     scene s;
-    int mesh_cap, material_cap, object_cap, light_cap, texture_cap;
+    int mesh_cap, material_cap, object_cap, light_cap, texture_cap, probe_cap;
     name_table mesh_names, material_names;
     int camera_line, ambient_line, falloff_line; /* 0 until given */
     last_kind last;                /* what a "key" line attaches to */

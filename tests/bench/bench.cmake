@@ -13,6 +13,8 @@ target_sources(bench PRIVATE
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_state.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_storage.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_storage_report.c)
+# Chapters 17's and 19's passes against chapter 11's lighting (--ambient-sweep).
+target_sources(bench PRIVATE ${CMAKE_SOURCE_DIR}/tools/bench/bench_ambient.c)
 
 # --quick runs a small sweep; the check is on the output's shape (columns, rows, finite numbers,
 # files), never on timings, which depend on the machine.
@@ -27,3 +29,9 @@ add_test(NAME bench.storage
   COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_storage.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-storage
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(bench.storage PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 60)
+# --ambient-sweep only: chapters 11, 17 and 19 on the default scene and teapots_probes; the output's
+# shape (tests/bench/run_bench_ambient.sh), never the timings.
+add_test(NAME bench.ambient
+  COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_ambient.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-ambient
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(bench.ambient PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 120)

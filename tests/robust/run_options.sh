@@ -76,12 +76,15 @@ expect 2 "bad --view-light '2.5': expected a whole number" 14_shadows --view-lig
 expect 2 "bad --ao-radius '0': expected a number from 0.001 to 1000" 17_ssao --ao-radius 0
 expect 2 "bad --ao-samples '65': expected a whole number from 1 to 64" 17_ssao --ao-samples 65
 expect 2 "bad --ao-blur '17'" 17_ssao --ao-blur 17
+expect 2 "bad --probe-size '48'" 19_image_based_light --probe-size 48
+expect 2 "bad --probe-size '8'" 19_image_based_light --probe-size 8
+expect 2 "bad --ibl-samples '0': expected a whole number from 1 to 1024" 19_image_based_light --ibl-samples 0
 # Each chapter's choices: a value that is none of them.
 for pair in 04_light_volumes:scale 06_additive_blending:accum 06_additive_blending:tonemap \
             07_face_culling:cull 07_face_culling:depth-clamp 08_stencil_volumes:batch 08_stencil_volumes:count \
             08_stencil_volumes:depth-clamp 08_stencil_volumes:reset 09_spot_lights:spot-volume \
             09_spot_lights:scale 10_tiled_deferred:path 11_clustered:assign 12_transparency:sort \
-            14_shadows:shadow-format 14_shadows:pcf 14_shadows:shadow-cull 15_light_prepass:specular 17_ssao:ssao; do
+            14_shadows:shadow-format 14_shadows:pcf 14_shadows:shadow-cull 15_light_prepass:specular 17_ssao:ssao 19_image_based_light:ibl; do
     expect 2 "unknown --${pair#*:} value 'bogus' (one of:" "${pair%%:*}" "--${pair#*:}" bogus
 done
 # Accepted by the parser: the run goes on to ask for a context, and finds none (77).

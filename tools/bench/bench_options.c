@@ -2,6 +2,7 @@
 #include "data_dir.h"
 #include "bench_options.h"
 
+#include "bench_ambient.h"
 #include "bench_gbuffer.h"
 #include "bench_storage.h"
 #include "bench_renderers.h"
@@ -69,6 +70,7 @@ void bench_options_print_help(FILE *f)
         "  --quiet               no progress lines (written while a frame takes more than 2 s)\n");
     bench_gbuffer_print_help(f);
     bench_storage_print_help(f);
+    bench_ambient_print_help(f);
     fprintf(f, "  --help                this text\n\n"
                "exit codes: 0 ok, 1 runtime failure, 2 usage error, 77 no GL context\n");
 }
@@ -222,6 +224,7 @@ static void set_defaults(bench_options *o)
     o->sweep_name = "full";
     bench_gbuffer_reset(false);
     bench_storage_reset(true, false);
+    bench_ambient_reset(true);
 }
 
 /* The learner's sweep: the scenes and light counts where the renderers' order changes (one light,
@@ -238,6 +241,7 @@ static void set_course(bench_options *o)
     o->case_budget_ms = 800;
     bench_gbuffer_reset(true);
     bench_storage_reset(false, false);
+    bench_ambient_reset(false);
 }
 
 static void set_quick(bench_options *o)
@@ -253,6 +257,7 @@ static void set_quick(bench_options *o)
     o->case_budget_ms = 1000;
     bench_gbuffer_reset(true);
     bench_storage_reset(false, true);
+    bench_ambient_reset(false);
 }
 
 /* What one option with a value made of its value; OPTION_UNKNOWN lets the next group try it. */
@@ -380,6 +385,8 @@ int bench_options_parse(int argc, char **argv, bench_options *out)
         int gbuffer = bench_gbuffer_parse_option(a, v);
         if (gbuffer == 0)
             gbuffer = bench_storage_parse_option(a, v);
+        if (gbuffer == 0)
+            gbuffer = bench_ambient_parse_option(a, v);
         if (gbuffer != 0) {
             if (gbuffer < 0)
                 return EXIT_CODE_USAGE;

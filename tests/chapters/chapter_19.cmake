@@ -1,0 +1,51 @@
+# Chapter 19 (image-based ambient light from probes, on chapter 11's clustered deferred frame): the
+# pictures its page shows, the claim "forward gets it too" (the same probes in the same shading
+# function: the same picture), that off it is chapter 11's picture, and the fallback outside every
+# probe (docs/19_image_based_light.md). Its references (Monte Carlo, cosine integral) and the hard
+# cases inside GL are tests/ibl/ibl.cmake.
+#
+# Agreement bound: 1/255 on 99.99 % of pixels, as for chapters 11 and 17: the probes, the table and
+# the pick are the same for both renderers; what is left is chapter 11's own difference between the
+# G-buffer's and the rasteriser's surface (position, normal), which moves the lookups a little.
+
+function(chapter_19_tests)
+  set(S ${CMAKE_SOURCE_DIR}/tests/scenes)
+  set(A ${CMAKE_SOURCE_DIR}/assets/scenes)
+  set(C 19_image_based_light)
+  if(NOT TARGET ${C} OR NOT TARGET 11_clustered)
+    return()
+  endif()
+
+  # The pictures the page shows (the default scene's lit picture is golden.19_image_based_light).
+  foreach(view probe irradiance specular)
+    course_golden_test(19_image_based_light_${view} ${C} 1 0.0001 --view ${view})
+  endforeach()
+  course_golden_test(19_image_based_light_teapots_probe ${C} 1 0.0001 --view probe --scene ${A}/teapots_probes.scene)
+  course_golden_test(19_image_based_light_size32 ${C} 1 0.0001 --view specular --probe-size 32)
+
+  # Forward gets it too: deferred, forward and Forward+ agree on the lit picture.
+  foreach(case "default|" "teapots_cutoff0|--scene@${A}/teapots_probes.scene@--cutoff@0" "800|--size@800x600"
+               "inside|--scene@${S}/ibl_inside.scene")
+    course_case("${case}" name args)
+    course_agreement_test(19_vs_forward_${name} 1 0.0001 ${C} ${args} VS ${C} --renderer forward ${args})
+  endforeach()
+  # Teapots at the default cut-off: 9 pixels of 76,800 (max 7/255 at (37,73)) on a light's hard
+  # cut-off, the pixels chapters 11, 15 and 17 leave there (tests/chapters/chapter_17.cmake), hence 0.02 %.
+  course_agreement_test(19_vs_forward_teapots 1 0.0002 ${C} --scene ${A}/teapots_probes.scene VS ${C}
+    --renderer forward --scene ${A}/teapots_probes.scene)
+  course_agreement_test(19_vs_forward_plus 1 0.0001 ${C} VS ${C} --renderer forward-plus)
+
+  # Off, it is chapter 11's picture to the byte; outside every probe's radius too (the fallback), and
+  # on a scene without probes; on, it is not.
+  course_agreement_test(19_off_is_11 0 0 ${C} --ibl off VS 11_clustered)
+  course_agreement_test(19_outside_is_11 0 0 ${C} --scene ${S}/ibl_outside.scene VS 11_clustered
+    --scene ${S}/ibl_outside.scene)
+  course_agreement_test(19_no_probes_is_11 0 0 ${C} --scene ${A}/spots.scene VS 11_clustered --scene ${A}/spots.scene)
+  course_agreement_test(19_on_differs 1 0.0001 ${C} VS 11_clustered)
+  set_tests_properties(agree.19_on_differs PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
+
+  add_test(NAME chapters.19_bad_probe_size COMMAND ${C} --headless --probe-size 48 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.19_bad_probe_size PROPERTIES LABELS golden
+    PASS_REGULAR_EXPRESSION "bad --probe-size '48'")
+endfunction()
+chapter_19_tests()
