@@ -50,13 +50,14 @@ if(COURSE_FUZZ)
     ${CMAKE_SOURCE_DIR}/common/scene/scene_lights.c
     ${CMAKE_SOURCE_DIR}/common/scene/scene_model.c ${CMAKE_SOURCE_DIR}/common/scene/model_import.c
     ${CMAKE_SOURCE_DIR}/common/scene/model_image.c
-    ${CMAKE_SOURCE_DIR}/common/scene/model_file.c ${CMAKE_SOURCE_DIR}/common/scene/model_scan.c
+    ${CMAKE_SOURCE_DIR}/common/model/model_file.c ${CMAKE_SOURCE_DIR}/common/model/model_scan.c
     ${CMAKE_SOURCE_DIR}/common/scene/mesh_data.c ${CMAKE_SOURCE_DIR}/common/scene/mesh_tangents.c
     ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)
   set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/platform/cli.c ${CMAKE_SOURCE_DIR}/common/platform/cli_help.c ${CMAKE_SOURCE_DIR}/common/platform/input_script.c
     ${CMAKE_SOURCE_DIR}/common/platform/input.c ${CMAKE_SOURCE_DIR}/common/base/gbuffer_layout_names.c
     ${CMAKE_SOURCE_DIR}/common/platform/keys.c ${CMAKE_SOURCE_DIR}/common/base/progress.c
-    ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)
+    ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c
+    ${CMAKE_SOURCE_DIR}/common/base/image.c) # a script's screenshot names an image format
   set(COURSE_FUZZ_SOURCES_script ${COURSE_FUZZ_SOURCES_cli})
   set(COURSE_FUZZ_SOURCES_model ${COURSE_FUZZ_SOURCES_scene}) # the scene parser reads models too
   foreach(target ${COURSE_FUZZ_TARGETS})

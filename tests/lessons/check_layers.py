@@ -6,6 +6,7 @@
 The layers, lowest first (a folder of common/ each; a file may include its own layer's headers and
 those of every layer below it, never one above):
     base      log, images, the data folder, exit codes, constants shared with GLSL: no GL, no scene
+    model     model files read safely: the pre-scan and Assimp's bounded, validated import: no scene
     scene     the scene format, lights and meshes as data: no GL
     gl        the GL layer: helpers, programs, framebuffers, timers, the scene on the GPU
     platform  the window or headless context, input, keys, the command line
@@ -23,7 +24,7 @@ import pathlib
 import re
 import sys
 
-LAYERS = ["base", "scene", "gl", "platform", "render", "clusters", "app"]
+LAYERS = ["base", "model", "scene", "gl", "platform", "render", "clusters", "app"]
 MAX_MODULES = 12
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 

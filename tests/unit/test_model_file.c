@@ -1,4 +1,4 @@
-/* test_model_file.c - model files within limits (common/scene/model_file.c): Assimp's messages as
+/* test_model_file.c - model files within limits (common/model/model_file.c): Assimp's messages as
  * one printable line, the limits and their variables, the pre-scan's counts against the bytes that
  * hold them, and mesh_data_load_memory on good and broken files of every format. */
 #include <setjmp.h>

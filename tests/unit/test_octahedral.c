@@ -353,7 +353,7 @@ static void test_codes_axes_exact(void **unused)
     static const float axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (int bits = 8; bits <= 16; bits += 4)
         for (int a = 0; a < 6; a++) {
-            float m = code_m(bits), q[2], e[2], r[3];
+            float m = code_m(bits), q[2] = {0, 0}, e[2], r[3];
             octahedral_encode_codes(axes[a], m, true, q);
             e[0] = (q[0] - m) / m, e[1] = (q[1] - m) / m;
             octahedral_decode(e, r);
