@@ -8,18 +8,20 @@
 uniform sampler2DArray u_maps_srgb;   // base colour, emissive: GL_SRGB8_ALPHA8, sampled as linear values
 uniform sampler2DArray u_maps_linear; // metal-rough, normal, occlusion: GL_RGBA8, sampled as stored
 
-#ifdef MATERIAL_MAPS_GRAD
-// Chapter 16's shading pass has no rasterised varyings: it rebuilds the texture coordinate and its
-// screen derivatives from the triangle, sets these two, and the maps are read with textureGrad, so a
-// texture's mip level is chosen from the same footprint as the rasterizer's implicit derivatives.
-vec2 g_map_dx, g_map_dy;
-#define MAP_SAMPLE(sampler, uvw) textureGrad(sampler, uvw, g_map_dx, g_map_dy)
-#else
+// MATERIAL_MAPS_GRAD is defined by chapter 16's visibility_shade.frag above its #include, and by no
+// program the loader builds with defines: the usual case, forward.vert's varyings, comes first.
+#ifndef MATERIAL_MAPS_GRAD
 in vec2 v_uv;
 in vec4 v_tangent;
 flat in vec4 v_maps;     // layers: base, metal-rough, normal, occlusion; -1 for none
 flat in vec4 v_emissive; // emissive rgb, its map's layer
 #define MAP_SAMPLE(sampler, uvw) texture(sampler, uvw)
+#else
+// Chapter 16's shading pass has no rasterised varyings: it rebuilds the texture coordinate and its
+// screen derivatives from the triangle, sets these two, and the maps are read with textureGrad, so a
+// texture's mip level is chosen from the same footprint as the rasterizer's implicit derivatives.
+vec2 g_map_dx, g_map_dy;
+#define MAP_SAMPLE(sampler, uvw) textureGrad(sampler, uvw, g_map_dx, g_map_dy)
 #endif
 
 // A normal-map texel (0..1 per channel) to a world-space normal. The tangent is made perpendicular to
