@@ -43,22 +43,30 @@ out vec4 o_color;
 
 struct vertex {
     vec3 position, normal; // object space
-    vec2 uv;
-    vec4 tangent; // object space, w the handedness
 };
 
-vertex vertex_fetch(int object, int triangle, int corner)
+// Where corner `corner` of the object's triangle lies in u_vertices (SHADER_MESH_VERTEX_FLOATS each).
+int vertex_first_float(int object, int triangle, int corner)
 {
     ivec2 mesh = texelFetch(u_object_meshes, object).xy;
-    int i = mesh.y + int(texelFetch(u_indices, mesh.x + 3 * triangle + corner).r);
-    int f = SHADER_MESH_VERTEX_FLOATS * i;
+    return SHADER_MESH_VERTEX_FLOATS * (mesh.y + int(texelFetch(u_indices, mesh.x + 3 * triangle + corner).r));
+}
+
+vertex vertex_fetch(int f)
+{
     vertex v;
     v.position = vec3(texelFetch(u_vertices, f).r, texelFetch(u_vertices, f + 1).r, texelFetch(u_vertices, f + 2).r);
     v.normal = vec3(texelFetch(u_vertices, f + 3).r, texelFetch(u_vertices, f + 4).r, texelFetch(u_vertices, f + 5).r);
-    v.uv = vec2(texelFetch(u_vertices, f + 6).r, texelFetch(u_vertices, f + 7).r); // common/scene/mesh_data.h
-    v.tangent = vec4(texelFetch(u_vertices, f + 8).r, texelFetch(u_vertices, f + 9).r, texelFetch(u_vertices, f + 10).r,
-                     texelFetch(u_vertices, f + 11).r);
     return v;
+}
+
+// The texture coordinate and the tangent (object space, w the handedness): common/scene/mesh_data.h.
+vec2 vertex_uv(int f) { return vec2(texelFetch(u_vertices, f + 6).r, texelFetch(u_vertices, f + 7).r); }
+
+vec4 vertex_tangent(int f)
+{
+    return vec4(texelFetch(u_vertices, f + 8).r, texelFetch(u_vertices, f + 9).r, texelFetch(u_vertices, f + 10).r,
+                texelFetch(u_vertices, f + 11).r);
 }
 
 // The hit of the ray o + t d with triangle (a, b, c): its barycentrics (1 - u - v, u, v). A triangle
@@ -109,31 +117,33 @@ vec3 shade_id(uint id, bool inside, out ivec2 range, out float depth)
     vec4 material = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MATERIAL);
     float shininess = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_SHININESS).r;
 
-    vertex v0 = vertex_fetch(object, triangle, 0), v1 = vertex_fetch(object, triangle, 1),
-           v2 = vertex_fetch(object, triangle, 2);
+    ivec3 f = ivec3(vertex_first_float(object, triangle, 0), vertex_first_float(object, triangle, 1),
+                    vertex_first_float(object, triangle, 2));
+    vertex v0 = vertex_fetch(f.x), v1 = vertex_fetch(f.y), v2 = vertex_fetch(f.z);
     vec3 a = (model * vec4(v0.position, 1.0)).xyz, b = (model * vec4(v1.position, 1.0)).xyz,
          c = (model * vec4(v2.position, 1.0)).xyz;
     vec3 w = ray_barycentrics(u_eye, pixel_ray(gl_FragCoord.xy), a, b, c, inside);
     vec3 p = w.x * a + w.y * b + w.z * c;
     vec3 normal = safe_normalize(normal_matrix * (w.x * v0.normal + w.y * v1.normal + w.z * v2.normal),
                                  vec3(0.0, 1.0, 0.0));
-    // The texture coordinate, and its screen derivatives as the rasterizer takes them: across the 2 x 2
-    // quad the pixel lies in, from its first pixel to the next right and up, each where that pixel's
-    // ray meets this triangle's plane (unclamped: a neighbour on another triangle is extrapolated, as
-    // the rasterizer's helper pixels are).
-    vec2 uv = w.x * v0.uv + w.y * v1.uv + w.z * v2.uv;
-    vec2 quad = floor(gl_FragCoord.xy * 0.5) * 2.0 + 0.5;
-    vec3 wc = ray_barycentrics(u_eye, pixel_ray(quad), a, b, c, false);
-    vec3 wx = ray_barycentrics(u_eye, pixel_ray(quad + vec2(1.0, 0.0)), a, b, c, false);
-    vec3 wy = ray_barycentrics(u_eye, pixel_ray(quad + vec2(0.0, 1.0)), a, b, c, false);
-    mat3x2 uvs = mat3x2(v0.uv, v1.uv, v2.uv);
-    g_map_dx = uvs * (wx - wc);
-    g_map_dy = uvs * (wy - wc);
-    vec4 tangent = vec4(mat3(model) * (w.x * v0.tangent.xyz + w.y * v1.tangent.xyz + w.z * v2.tangent.xyz),
-                        v0.tangent.w);
-    float occlusion;
-    material_apply_maps_at(uv, tangent, texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MAPS), material.rgb, material.a,
-                           shininess, normal, occlusion);
+    // A material's images (chapter 18), only where it has some: the texture coordinate, and its screen
+    // derivatives as the rasterizer takes them: across the 2 x 2 quad the pixel lies in, from its first
+    // pixel to the next right and up, each where that pixel's ray meets this triangle's plane
+    // (unclamped: a neighbour on another triangle is extrapolated, as the rasterizer's helper pixels are).
+    vec4 maps = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MAPS);
+    float occlusion = 1.0;
+    if (material_is_pbr(shininess) && any(greaterThanEqual(maps, vec4(0.0)))) {
+        mat3x2 uvs = mat3x2(vertex_uv(f.x), vertex_uv(f.y), vertex_uv(f.z));
+        vec2 quad = floor(gl_FragCoord.xy * 0.5) * 2.0 + 0.5;
+        vec3 wc = ray_barycentrics(u_eye, pixel_ray(quad), a, b, c, false);
+        vec3 wx = ray_barycentrics(u_eye, pixel_ray(quad + vec2(1.0, 0.0)), a, b, c, false);
+        vec3 wy = ray_barycentrics(u_eye, pixel_ray(quad + vec2(0.0, 1.0)), a, b, c, false);
+        g_map_dx = uvs * (wx - wc);
+        g_map_dy = uvs * (wy - wc);
+        vec4 t0 = vertex_tangent(f.x), t1 = vertex_tangent(f.y), t2 = vertex_tangent(f.z);
+        vec4 tangent = vec4(mat3(model) * (w.x * t0.xyz + w.y * t1.xyz + w.z * t2.xyz), t0.w);
+        material_apply_maps_at(uvs * w, tangent, maps, material.rgb, material.a, shininess, normal, occlusion);
+    }
 
     depth = cluster_view_depth(p);
     range = cluster_range(cluster_index(gl_FragCoord.xy, depth));

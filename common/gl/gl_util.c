@@ -256,3 +256,13 @@ bool gl_have_compute(void)
     const char *hide = getenv("COURSE_NO_COMPUTE");
     return GLAD_GL_VERSION_4_3 && !(hide && *hide && strcmp(hide, "0") != 0);
 }
+
+void gl_texture_sampling(GLenum target, GLint min_filter, GLint mag_filter, GLint wrap)
+{
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, min_filter);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, mag_filter);
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+    if (target == GL_TEXTURE_CUBE_MAP || target == GL_TEXTURE_3D)
+        glTexParameteri(target, GL_TEXTURE_WRAP_R, wrap);
+}

@@ -5,6 +5,8 @@
  *   gl_texture_destroy / gl_buffer_destroy / gl_framebuffer_destroy / gl_vertex_array_destroy / ..._destroy
  *                                         create/delete pairs that count live objects
  *   gl_live_objects()                     objects created and not yet destroyed (leak checks)
+ *   gl_texture_sampling(target, min, mag, wrap)
+ *                                         the bound texture's filters, and one wrap mode on every axis
  *   gl_live_objects_add(delta)            count objects made without the pairs above (gl_program.c's)
  *   gl_check(where)                       glGetError loop; logs and returns false on error
  *   gl_error_name(e)                      "GL_OUT_OF_MEMORY", ... for a glGetError value
@@ -51,6 +53,7 @@
 #include <stddef.h>
 
 GLuint gl_texture_create(void);
+void gl_texture_sampling(GLenum target, GLint min_filter, GLint mag_filter, GLint wrap);
 GLuint gl_buffer_create(void);
 GLuint gl_framebuffer_create(void);
 GLuint gl_vertex_array_create(void);

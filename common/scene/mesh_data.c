@@ -274,6 +274,15 @@ static void count_node(const struct aiScene *sc, const struct aiNode *node, int 
         count_node(sc, node->mChildren[c], verts, idx);
 }
 
+/* A normal of unit length; degenerate input (zero-length or NaN) gives +Y rather than NaN pixels. */
+static struct aiVector3D unit_normal(struct aiVector3D n)
+{
+    float len = sqrtf(n.x * n.x + n.y * n.y + n.z * n.z);
+    if (!(len > 1e-20f) || !isfinite(len))
+        return (struct aiVector3D){0, 1, 0};
+    return (struct aiVector3D){n.x / len, n.y / len, n.z / len};
+}
+
 /* A model's vertex: its first texture coordinate set when it has one, and Assimp's tangent when that is
  * usable (finite, not along the normal); else w = 0, for mesh_data_generate_tangents. */
 static void put_model_vertex(mesh_data *m, int i, const struct aiMesh *mesh, unsigned v,
@@ -322,11 +331,7 @@ static void copy_node(const struct aiScene *sc, const struct aiNode *node, struc
             struct aiVector3D n = mesh->mNormals ? mesh->mNormals[v] : (struct aiVector3D){0, 0, 0};
             aiTransformVecByMatrix4(&p, &world);
             aiTransformVecByMatrix3(&n, &normal_matrix);
-            float len = sqrtf(n.x * n.x + n.y * n.y + n.z * n.z);
-            /* Degenerate input gives zero-length or NaN normals: use +Y rather than NaN pixels. */
-            if (!(len > 1e-20f) || !isfinite(len))
-                n = (struct aiVector3D){0, 1, 0}, len = 1;
-            put_model_vertex(m, *vbase + (int)v, mesh, v, &world, p, (struct aiVector3D){n.x / len, n.y / len, n.z / len});
+            put_model_vertex(m, *vbase + (int)v, mesh, v, &world, p, unit_normal(n));
         }
         for (unsigned f = 0; f < mesh->mNumFaces; f++) {
             const struct aiFace *face = &mesh->mFaces[f];
@@ -465,28 +470,11 @@ static bool load_part(mesh_data *m, const char *path, int part, const char *pre)
     }
     if (!mesh_alloc(m, (int)mesh->mNumVertices, 3 * triangles))
         return false;
+    struct aiMatrix4x4 identity; /* the part in the file's own space: the node's matrix is the object's */
+    aiIdentityMatrix4(&identity);
     for (unsigned v = 0; v < mesh->mNumVertices; v++) {
-        const struct aiVector3D *p = &mesh->mVertices[v];
-        struct aiVector3D n = mesh->mNormals ? mesh->mNormals[v] : (struct aiVector3D){0, 1, 0};
-        float len = sqrtf(n.x * n.x + n.y * n.y + n.z * n.z);
-        if (!(len > 1e-20f) || !isfinite(len)) /* as in copy_node: +Y rather than NaN pixels */
-            n = (struct aiVector3D){0, 1, 0}, len = 1;
-        const float pos[3] = {p->x, p->y, p->z}, normal[3] = {n.x / len, n.y / len, n.z / len};
-        float uv[2] = {0, 0}, tangent[4] = {0, 0, 0, 0};
-        if (mesh->mTextureCoords[0])
-            uv[0] = mesh->mTextureCoords[0][v].x, uv[1] = mesh->mTextureCoords[0][v].y;
-        if (mesh->mTangents && mesh->mBitangents) {
-            const struct aiVector3D t = mesh->mTangents[v], b = mesh->mBitangents[v];
-            /* w: whether the bitangent is cross(normal, tangent) or its opposite */
-            float c[3] = {normal[1] * t.z - normal[2] * t.y, normal[2] * t.x - normal[0] * t.z,
-                          normal[0] * t.y - normal[1] * t.x};
-            float w = c[0] * b.x + c[1] * b.y + c[2] * b.z < 0.0f ? -1.0f : 1.0f;
-            if (isfinite(t.x) && isfinite(t.y) && isfinite(t.z))
-                tangent[0] = t.x, tangent[1] = t.y, tangent[2] = t.z, tangent[3] = w;
-        }
-        if (!isfinite(uv[0]) || !isfinite(uv[1]))
-            uv[0] = uv[1] = 0.0f;
-        mesh_data_put_vertex(m, (int)v, pos, normal, uv, tangent);
+        struct aiVector3D n = mesh->mNormals ? mesh->mNormals[v] : (struct aiVector3D){0, 0, 0};
+        put_model_vertex(m, (int)v, mesh, v, &identity, mesh->mVertices[v], unit_normal(n));
     }
     int k = 0;
     for (unsigned f = 0; f < mesh->mNumFaces; f++)

@@ -128,6 +128,17 @@ static name_list material_list(const parser *p)
 enum { MATERIAL_SPECULAR, MATERIAL_SHININESS, MATERIAL_OPACITY };
 static const char *const MATERIAL_ATTRIBUTES[] = {"specular", "shininess", "opacity", NULL};
 
+/* 0 < A <= 1: an opacity of 0 would be an object nobody can see, drawn at full cost. */
+bool scene_parser_take_opacity(parser *p, float *opacity)
+{
+    if (!scene_parser_take_number(p, "material opacity", NUMBER_POSITIVE, opacity))
+        return false;
+    if (!(*opacity <= 1.0f))
+        return scene_parser_fail(p, "material opacity: must be at most 1 (1 is opaque), got '%s'",
+                                 scene_parser_show_token(p->tok[p->pos - 1]).text);
+    return true;
+}
+
 static bool take_material_attribute(parser *p, scene_material *m, unsigned *seen)
 {
     int attribute = scene_parser_take_attribute(p, "material", MATERIAL_ATTRIBUTES,
@@ -137,14 +148,7 @@ static bool take_material_attribute(parser *p, scene_material *m, unsigned *seen
         return scene_parser_take_number(p, "material specular", NUMBER_NON_NEGATIVE, &m->specular);
     case MATERIAL_SHININESS:
         return scene_parser_take_number(p, "material shininess", NUMBER_POSITIVE, &m->shininess);
-    case MATERIAL_OPACITY:
-        /* 0 < A <= 1: an opacity of 0 would be an object nobody can see, drawn at full cost. */
-        if (!scene_parser_take_number(p, "material opacity", NUMBER_POSITIVE, &m->opacity))
-            return false;
-        if (!(m->opacity <= 1.0f))
-            return scene_parser_fail(p, "material opacity: must be at most 1 (1 is opaque), got '%s'",
-                                     scene_parser_show_token(p->tok[p->pos - 1]).text);
-        return true;
+    case MATERIAL_OPACITY: return scene_parser_take_opacity(p, &m->opacity);
     default: return false; /* already reported */
     }
 }

@@ -22,6 +22,7 @@
  *   scene_parser_run_directive(p)                        parse a tokenized line by its directive
  *   scene_parser_resolve_file(p, what, given, out)       a model or image path, found and readable
  *   scene_parser_take_placement(p, what, o, &seen)       an object's position, rotate_y, scale or cast
+ *   scene_parser_take_opacity(p, &opacity)               a material's opacity, 0 < A <= 1
  * scene_materials.c:
  *   scene_parser_take_pbr(p, m)                          the rest of a `material NAME pbr ...` line
  * scene_model.c:
@@ -118,6 +119,7 @@ bool scene_parser_take_switch(parser *p, const char *what, bool *off);
 bool scene_parser_run_directive(parser *p);
 bool scene_parser_resolve_file(parser *p, const char *what, const char *given, char out[SCENE_PATH_MAX]);
 bool scene_parser_take_pbr(parser *p, scene_material *m);
+bool scene_parser_take_opacity(parser *p, float *opacity);
 bool scene_parser_take_placement(parser *p, const char *what, scene_object *o, unsigned *seen);
 bool scene_parser_parse_model(parser *p);
 bool scene_parser_parse_light(parser *p);

@@ -93,13 +93,7 @@ static bool take_pbr_attribute(parser *p, scene_material *m, unsigned *seen)
     case PBR_METALLIC: return take_fraction(p, "material metallic", &m->metallic);
     case PBR_ROUGHNESS: return take_fraction(p, "material roughness", &m->roughness);
     case PBR_EMISSIVE: return scene_parser_take_vec3(p, "material emissive", NUMBER_NON_NEGATIVE, m->emissive);
-    case PBR_OPACITY:
-        if (!scene_parser_take_number(p, "material opacity", NUMBER_POSITIVE, &m->opacity))
-            return false;
-        if (!(m->opacity <= 1.0f))
-            return scene_parser_fail(p, "material opacity: must be at most 1 (1 is opaque), got '%s'",
-                                     scene_parser_show_token(p->tok[p->pos - 1]).text);
-        return true;
+    case PBR_OPACITY: return scene_parser_take_opacity(p, &m->opacity);
     default: return take_map(p, m, attribute - PBR_FIRST_MAP);
     }
 }
