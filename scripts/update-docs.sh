@@ -13,6 +13,7 @@
 #   shadow-bench.md chapter 14 on the teapots: deferred, Forward+ and forward with 0 to 256 shadowed
 #                   lights, still and moving, with and without the caster culling, against chapter 11
 #                   (scripts/shadow-table.sh), and the issue's targets met or missed
+#   storage/        build/bin/bench --storage only at 320x240: what to store per pixel (docs/16)
 #   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots
 # Each file starts with the same stamp (date, CPU, cores, GL renderer, commit, clock). The pages
 # embed sections of these files verbatim between <!-- generated: FILE#SECTION --> markers, and
@@ -169,8 +170,18 @@ $quick && shadow_size=160x120 shadow_target=160x120
 mv "$data/shadow-bench.md.tmp" "$data/shadow-bench.md"
 echo "wrote $data/shadow-bench.md"
 
-bench_args=(--full)
-$quick && bench_args=(--quick)
+# What to store per pixel (docs/16_visibility_buffer.md): the storage table on its own, at 320x240 and
+# 3 frames (about 7 minutes on 2 cores; the sweep's 800x800 has 8 times the pixels, and the bunnies'
+# 7.3 M triangles at 4 samples already take seconds a frame here).
+storage_args=(--size 320x240 --frames 3 --warmup 1)
+$quick && storage_args=(--quick)
+build/bin/bench --storage only --out "$data/storage" --no-plots "${storage_args[@]}"
+{ printf '%s\n\n' "$stamp"; cat "$data/storage/bench.md"; } >"$data/storage/bench.md.tmp"
+mv "$data/storage/bench.md.tmp" "$data/storage/bench.md"
+echo "wrote $data/storage/bench.md"
+
+bench_args=(--full --storage off)
+$quick && bench_args=(--quick --storage off)
 build/bin/bench --out "$data/bench" "${bench_args[@]}"
 # The stamp goes on top of the benchmark's own report, which names the machine too; Forward+ against
 # the best deferred renderer, case by case, is read from the same run's CSV.
