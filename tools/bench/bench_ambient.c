@@ -50,8 +50,10 @@ void bench_ambient_print_help(FILE *f)
 {
     fprintf(f, "  --ambient-sweep MODE   on: after the sweeps, chapter 17's SSAO and chapter 19's probes beside\n"
                "                        chapter 11 on the default scene and teapots_probes: their passes' time\n"
-               "                        and memory (DIR/bench_ambient.md and .csv); off; only: nothing else\n"
-               "                        (--full: on; otherwise off)\n");
+               "                        and memory; then SSAO's directions x blur timed and compared with\n"
+               "                        traced occlusion (160x120), and the split sum's error by roughness\n"
+               "                        against Monte Carlo (DIR/bench_ambient.md, bench_ambient*.csv);\n"
+               "                        off; only: nothing else (--full: on; otherwise off)\n");
 }
 
 static double pass_ms(const frame_times *t, const char *name)

@@ -192,7 +192,7 @@ static void write_ssao(const bench_options *o, const ssao_table *t, FILE *md, FI
                 "frames, ms. Error: its occlusion (`--view ao`, `ao-blurred` with a blur) at %dx%d against "
                 "occlusion traced in double precision (%d x %d cosine-weighted rays per pixel, %s), over the "
                 "%ld pixels that see a surface: the mean error in A (0 shut, 1 open) and the share of pixels "
-                "off by more than %.1f. The reference's own noise (a second set of rays on every 4th pixel): "
+                "off by more than %.1f. The reference's own noise (a second set of rays on every 4th pixel traced): "
                 "mean",
             o->width, o->height, t->rows[0].time.frames, AO_W, AO_H, AO_RAYS, AO_RAYS,
             t->stride > 1 ? "every 4th pixel in x and y" : "every pixel", t->rows[0].error[0].count, BOUND);
