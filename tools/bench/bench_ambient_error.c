@@ -125,7 +125,8 @@ static bool ssao_run(const bench_options *o, ssao_table *t)
     if (!scene_load(path, &sc))
         return false;
     bool made = gpu_scene_create(&sc, &gs);
-    bool ok = made && ray_scene_build(&rays, &sc, 0.0f) && gpu_scene_update(&gs, 0.0f, LIGHT_DEFAULT_CUTOFF, AO_W, AO_H);
+    bool ok = made && ray_scene_build(&rays, &sc, 0.0f) &&
+              gpu_scene_update(&gs, 0.0f, LIGHT_DEFAULT_CUTOFF, AO_W, AO_H);
     for (int r = 0; ok && r < t->radius_count; r++) {
         trace_reference(&rays, &gs, t->radii[r], t->stride, &t->noise_mean[r], &t->noise_max[r]);
         for (int i = 0; ok && i < t->count; i++)
