@@ -19,9 +19,8 @@
  *   far         its surface more than 8 units from the eye
  */
 #include "ao_reference.h"
-#include "app_embed.h"
-#include "chapters.h"
 #include "hard_util.h"
+#include "ssao_readback.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -108,13 +107,8 @@ typedef struct error_stats {
 static bool measure(const gpu_scene *gs, const char *radius, const char *samples, const char *blur, double bound,
                     error_stats *all, error_stats cases[CASE_COUNT])
 {
-    const char *args[] = {"--view", atoi(blur) > 0 ? "ao-blurred" : "ao", "--ao-radius", radius, "--ao-samples", samples,
-                          "--ao-blur", blur, NULL};
     static unsigned char rgba[4 * W * H];
-    app_embed *e = NULL;
-    bool ok = app_embed_open(&chapter_17, args, gs, &e) && app_embed_frame(e, gs, false, NULL) &&
-              fbo_read_rgba8(app_embed_target(e), 0, rgba);
-    app_embed_close(e);
+    bool ok = ssao_readback(gs, radius, samples, blur, rgba);
     *all = (error_stats){0};
     for (int c = 0; c < CASE_COUNT; c++)
         cases[c] = (error_stats){0};

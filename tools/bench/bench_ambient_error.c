@@ -2,15 +2,14 @@
 #include "bench_ambient_error.h"
 
 #include "ao_reference.h"
-#include "app_embed.h"
 #include "bench_ambient.h"
 #include "chapters.h"
-#include "fbo.h"
 #include "ibl_probes.h"
 #include "light.h"
 #include "log.h"
 #include "probe_readback.h"
 #include "progress.h"
+#include "ssao_readback.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -70,13 +69,8 @@ static bool compare_config(const gpu_scene *gs, const ssao_config *c, double rad
     snprintf(samples, sizeof samples, "%d", c->samples);
     snprintf(blur, sizeof blur, "%d", c->blur);
     snprintf(r, sizeof r, "%g", radius);
-    const char *args[] = {"--view", c->blur > 0 ? "ao-blurred" : "ao", "--ao-radius", r, "--ao-samples", samples,
-                          "--ao-blur", blur, NULL};
     static unsigned char rgba[4 * AO_W * AO_H];
-    app_embed *e = NULL;
-    bool ok = app_embed_open(&chapter_17, args, gs, &e) && app_embed_frame(e, gs, false, NULL) &&
-              fbo_read_rgba8(app_embed_target(e), 0, rgba);
-    app_embed_close(e);
+    bool ok = ssao_readback(gs, r, samples, blur, rgba);
     *out = (ao_error){0};
     for (int i = 0; ok && i < AO_W * AO_H; i++) {
         if (reference[i] < 0.0)
