@@ -68,6 +68,14 @@ static double pass_ms(const frame_times *t, const char *name)
  * and the depth-normal pre-pass's RGBA8 + D32F, made for either renderer. */
 static double ssao_bytes(int w, int h) { return (8.0 + 8.0 + 4.0 + 4.0) * w * h; }
 
+/* What chapter `desc` adds on the GPU over chapter 11's frame (its own targets or probes). */
+static double added_bytes(const app_desc *desc, const bench_options *o)
+{
+    if (desc == &chapter_17)
+        return ssao_bytes(o->width, o->height);
+    return desc == &chapter_19 ? (double)chapter_19_probe_bytes() : 0.0;
+}
+
 bool bench_ambient_time(const bench_options *o, const gpu_scene *gs, int count, const app_desc *const descs[],
                         const char *const *const args[], bench_ambient_row rows[])
 {
@@ -109,7 +117,7 @@ bool bench_ambient_time(const bench_options *o, const gpu_scene *gs, int count, 
         }
         rows[c].first_extra_ms = first[c] - rows[c].ms[0];
         rows[c].frames = frames;
-        rows[c].bytes = 0.0;
+        rows[c].bytes = added_bytes(descs[c], o); /* while the chapter is open: its probes are */
     }
     for (int c = 0; c < count; c++) {
         app_embed_close(e[c]);
@@ -131,8 +139,6 @@ static bool run_scene(const bench_options *o, const char *name, ambient_row rows
     bool made = gpu_scene_create(&sc, &gs);
     bool ok = made && gpu_scene_update(&gs, 0.0f, LIGHT_DEFAULT_CUTOFF, o->width, o->height) &&
               bench_ambient_time(o, &gs, CHAPTERS, chapter_descs, NULL, rows);
-    for (int c = 0; ok && c < CHAPTERS; c++)
-        rows[c].bytes = c == 1 ? ssao_bytes(o->width, o->height) : c == 2 ? (double)chapter_19_probe_bytes() : 0.0;
     if (made)
         gpu_scene_destroy(&gs);
     scene_destroy(&sc);

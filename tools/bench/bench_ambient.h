@@ -21,7 +21,6 @@
  *                                          `count` (at most 3) chapters with their arguments (args
  *                                          NULL: none for any) open together on gs and drawn in
  *                                          turn, o->frames frames each after the warm-up: a row each
- *                                          (its bytes left 0)
  *   bench_ambient_print_help(f)            the option's --help lines
  */
 #ifndef TOOLS_BENCH_AMBIENT_H
