@@ -21,7 +21,7 @@ awk -F, 'NR == 1 { if ($1 != "scene" || NF != 14) { print "FAIL: header: " $0; b
          { rows++
            if ($6 == "" || $11 == "" || $6 + 0 <= 0 || $11 + 0 <= 0) { print "FAIL: no frame or lighting time: " $0; bad = 1 }
            if ($2 == "17_ssao" && ($9 == "" || $9 + 0 <= 0 || $14 + 0 <= 0)) { print "FAIL: 17 without SSAO time or memory: " $0; bad = 1 }
-           if ($2 == "19_image_based_light" && $14 + 0 < 1048576) { print "FAIL: 19 without its probes' memory: " $0; bad = 1 } }
+           if ($2 == "19_image_based_light" && $14 + 0 < 1048576) { print "FAIL: 19 without the memory of its probes: " $0; bad = 1 } }
          END { if (rows != 6) { print "FAIL: " rows " rows, expected 6"; bad = 1 }
                if (!bad) print "ok: 6 rows"; exit bad }' "$csv" || exit 1
 for section in "SSAO against traced occlusion" "Split sum against Monte Carlo"; do
