@@ -14,7 +14,10 @@
 #                   lights, still and moving, with and without the caster culling, against chapter 11
 #                   (scripts/shadow-table.sh), and the issue's targets met or missed
 #   storage/        build/bin/bench --storage only at 320x240: what to store per pixel (docs/16)
-#   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots
+#   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots; its ambient
+#                   sweep (chapters 17 and 19 against chapter 11's lighting pass, then their errors
+#                   against the exact references): bench_ambient.md and its CSV files. By hand, that
+#                   part alone (about 7 minutes): scripts/update-docs.sh --ambient-only
 # Each file starts with the same stamp (date, CPU, cores, GL renderer, commit, clock). The pages
 # embed sections of these files verbatim between <!-- generated: FILE#SECTION --> markers, and
 # tests/lessons/doc_generated.py fails when a page's copy differs from the file (--update refreshes them).
@@ -22,8 +25,9 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-quick=false
+quick=false ambient_only=false
 [ "${1:-}" = "--quick" ] && quick=true
+[ "${1:-}" = "--ambient-only" ] && ambient_only=true
 "$root/scripts/build.sh" "$root/build" >/dev/null
 renderer=$(build/bin/00_forward --headless --gl-info | sed -n 's/^gl: renderer=//p')
 # llvmpipe's run is the pages' main set; a GPU's goes beside it, so both can be shown side by side.
@@ -37,6 +41,22 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)
 stamp="Measured $(date -u '+%Y-%m-%d %H:%M UTC') on ${cpu:-an unknown CPU} ($(nproc) cores), $renderer, \
 $version; commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo '+changes'); \
 frame times with glFinish and a monotonic clock; medians over the frames each table states."
+
+# The ambient sweep's report with the stamp on top: DIR (where the benchmark wrote it) into $data/bench.
+stamp_ambient() {
+  { printf '%s\n\n' "$stamp"; cat "$1/bench_ambient.md"; } >"$data/bench/bench_ambient.md.tmp"
+  [ "$1" = "$data/bench" ] || cp "$1"/bench_ambient*.csv "$data/bench/"
+  mv "$data/bench/bench_ambient.md.tmp" "$data/bench/bench_ambient.md"
+}
+if $ambient_only; then # the benchmark's --full settings for that part only, beside the other files
+  tmp=$(mktemp -d)
+  build/bin/bench --full --ambient-sweep only --no-plots --out "$tmp"
+  stamp_ambient "$tmp"
+  rm -rf "$tmp"
+  /usr/bin/python3 tests/lessons/doc_generated.py --update "$root"
+  echo "wrote $data/bench/bench_ambient.md; the pages now show it; review with: git diff docs"
+  exit 0
+fi
 
 # One table row from a --bench line: chapter, renderer, median, passes, shaded pixels.
 row() {
@@ -188,5 +208,6 @@ build/bin/bench --out "$data/bench" "${bench_args[@]}"
 { printf '%s\n\n' "$stamp"; cat "$data/bench/bench.md"; echo; scripts/forward-plus-table.sh "$data/bench/bench.csv"; } \
   >"$data/bench/bench.md.tmp"
 mv "$data/bench/bench.md.tmp" "$data/bench/bench.md"
+stamp_ambient "$data/bench"
 /usr/bin/python3 tests/lessons/doc_generated.py --update "$root"
 echo "the pages now show this run; review with: git diff docs"

@@ -20,6 +20,7 @@
  *   bench_gbuffer    the G-buffer layouts: bytes, time and precision (--gbuffer-sweep)
  *   bench_storage    what to store per pixel: bytes counted, passes timed, error (--storage)
  *   bench_ambient    SSAO and image-based light against the lighting pass (--ambient-sweep)
+ *   bench_ambient_error  their errors against the exact references (tools/reference/)
  */
 #include "bench/bench_ambient.h"
 #include "bench/bench_gbuffer.h"

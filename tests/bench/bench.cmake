@@ -14,7 +14,9 @@ target_sources(bench PRIVATE
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_storage.c
   ${CMAKE_SOURCE_DIR}/tools/bench/bench_storage_report.c)
 # Chapters 17's and 19's passes against chapter 11's lighting (--ambient-sweep).
-target_sources(bench PRIVATE ${CMAKE_SOURCE_DIR}/tools/bench/bench_ambient.c)
+# Their errors against the exact references (tools/reference/, the tests' too).
+target_sources(bench PRIVATE ${CMAKE_SOURCE_DIR}/tools/bench/bench_ambient.c
+               ${CMAKE_SOURCE_DIR}/tools/bench/bench_ambient_error.c)
 
 # --quick runs a small sweep; the check is on the output's shape (columns, rows, finite numbers,
 # files), never on timings, which depend on the machine.

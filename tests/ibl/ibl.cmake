@@ -9,7 +9,7 @@
 if(TARGET 19_image_based_light)
   add_executable(test_ibl_reference ${CMAKE_SOURCE_DIR}/tests/ibl/test_ibl_reference.c
                  ${CMAKE_SOURCE_DIR}/tests/hard/hard_util.c)
-  target_link_libraries(test_ibl_reference PRIVATE chapters)
+  target_link_libraries(test_ibl_reference PRIVATE chapters reference_readback)
   target_include_directories(test_ibl_reference PRIVATE ${CMAKE_SOURCE_DIR}/tests/hard)
   set_target_properties(test_ibl_reference PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
   add_test(NAME hard.ibl_reference

@@ -6,8 +6,8 @@
 
 if(TARGET 14_shadows)
   add_executable(test_shadow_reference ${CMAKE_SOURCE_DIR}/tests/shadows/test_shadow_reference.c
-                 ${CMAKE_SOURCE_DIR}/tests/hard/hard_util.c ${CMAKE_SOURCE_DIR}/tests/hard/ray_scene.c)
-  target_link_libraries(test_shadow_reference PRIVATE chapters)
+                 ${CMAKE_SOURCE_DIR}/tests/hard/hard_util.c)
+  target_link_libraries(test_shadow_reference PRIVATE chapters reference)
   target_include_directories(test_shadow_reference PRIVATE ${CMAKE_SOURCE_DIR}/tests/hard)
   set_target_properties(test_shadow_reference PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
   set(SS ${CMAKE_SOURCE_DIR}/tests/scenes)

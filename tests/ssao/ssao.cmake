@@ -12,8 +12,8 @@
 
 if(TARGET 17_ssao)
   add_executable(test_ssao_reference ${CMAKE_SOURCE_DIR}/tests/ssao/test_ssao_reference.c
-                 ${CMAKE_SOURCE_DIR}/tests/hard/hard_util.c ${CMAKE_SOURCE_DIR}/tests/hard/ray_scene.c)
-  target_link_libraries(test_ssao_reference PRIVATE chapters)
+                 ${CMAKE_SOURCE_DIR}/tests/hard/hard_util.c)
+  target_link_libraries(test_ssao_reference PRIVATE chapters reference_readback)
   target_include_directories(test_ssao_reference PRIVATE ${CMAKE_SOURCE_DIR}/tests/hard)
   set_target_properties(test_ssao_reference PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
   add_test(NAME hard.ssao_reference

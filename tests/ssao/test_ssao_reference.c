@@ -1,10 +1,9 @@
-/* test_ssao_reference.c - chapter 17's screen-space ambient occlusion against an exact reference: for
- * every pixel, a ray from the eye through the pixel's centre finds the surface, and G x G rays leave it
- * over the hemisphere about its normal, cosine-weighted and stratified (one jittered ray per cell of
- * the unit square, mapped to the disc and lifted), each asking whether anything lies within the
- * radius; the share that leave freely is the occlusion the chapter estimates (its --view ao, or
- * ao-blurred, in the red channel). All in double precision against every triangle of the scene. The
- * reference's own noise is measured too: a second set of jitters on every 4th pixel.
+/* test_ssao_reference.c - chapter 17's screen-space ambient occlusion against an exact reference
+ * (tools/reference/ao_reference.h, the benchmark's too): for every pixel, the surface behind its
+ * centre and G x G cosine-weighted, stratified rays from it, in double precision against every
+ * triangle of the scene; the share that leave freely within the radius is the occlusion the chapter
+ * estimates (its --view ao, or ao-blurred, in the red channel). The reference's own noise is
+ * measured too: a second set of jitters on every 4th pixel.
  *
  *   test_ssao_reference SCENE RADIUS MAX_MEAN BOUND MAX_BEYOND SILHOUETTE BORDER THIN FAR [SAMPLES BLUR]...
  *
@@ -19,12 +18,9 @@
  *               a fifth of the radius in two directions: the post)
  *   far         its surface more than 8 units from the eye
  */
-#include "app_embed.h"
-#include "chapters.h"
+#include "ao_reference.h"
 #include "hard_util.h"
-#include "mat4d.h"
-#include "ray_scene.h"
-#include "rng.h"
+#include "ssao_readback.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -41,61 +37,6 @@ static bool near_thin[W * H];
 
 enum { CASE_SILHOUETTE, CASE_BORDER, CASE_THIN, CASE_FAR, CASE_OPEN, CASE_COUNT };
 static const char *const case_names[CASE_COUNT] = {"silhouette", "border", "thin", "far", "open"};
-
-static void normalize3(double v[3])
-{
-    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (int k = 0; k < 3; k++)
-        v[k] /= l;
-}
-
-/* The share of G x G cosine-weighted rays from p (about n) that meet nothing within radius. */
-static double open_share(const double p[3], const double n[3], double radius, rng *r)
-{
-    double t[3], b[3], o[3];
-    if (fabs(n[0]) < 0.5) /* cross((1,0,0), n) */
-        t[0] = 0.0, t[1] = -n[2], t[2] = n[1];
-    else /* cross((0,1,0), n) */
-        t[0] = n[2], t[1] = 0.0, t[2] = -n[0];
-    normalize3(t);
-    b[0] = n[1] * t[2] - n[2] * t[1], b[1] = n[2] * t[0] - n[0] * t[2], b[2] = n[0] * t[1] - n[1] * t[0];
-    for (int k = 0; k < 3; k++)
-        o[k] = p[k] + 1e-7 * n[k]; /* off the surface's own triangle */
-    int open = 0;
-    for (int i = 0; i < G; i++)
-        for (int j = 0; j < G; j++) {
-            double u = (i + rng_unit(r)) / G, phi = 2.0 * GLM_PI * (j + rng_unit(r)) / G, s = sqrt(u), d[3];
-            const double *tri;
-            for (int k = 0; k < 3; k++)
-                d[k] = s * cos(phi) * t[k] + s * sin(phi) * b[k] + sqrt(1.0 - u) * n[k];
-            open += ray_scene_trace(&rays, o, d, 0.0, radius, RAY_ANY, &tri) < 0.0;
-        }
-    return (double)open / (G * G);
-}
-
-/* The surface through pixel (x, y)'s centre: its point and normal (towards the eye); false if none. */
-static bool surface_at(const double inv_view_proj[16], const double eye[3], int x, int y, double p[3], double n[3])
-{
-    double ndc[4] = {2.0 * (x + 0.5) / W - 1.0, 2.0 * (y + 0.5) / H - 1.0, 1.0, 1.0}, far_point[4] = {0}, d[3];
-    for (int r = 0; r < 4; r++)
-        for (int c = 0; c < 4; c++)
-            far_point[r] += inv_view_proj[4 * c + r] * ndc[c];
-    for (int k = 0; k < 3; k++)
-        d[k] = far_point[k] / far_point[3] - eye[k];
-    const double *v;
-    double t = ray_scene_trace(&rays, eye, d, 1e-9, 1.0, RAY_NEAREST, &v);
-    if (t <= 0.0)
-        return false;
-    double e1[3], e2[3];
-    for (int k = 0; k < 3; k++)
-        p[k] = eye[k] + t * d[k], e1[k] = v[3 + k] - v[k], e2[k] = v[6 + k] - v[k];
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1], n[1] = e1[2] * e2[0] - e1[0] * e2[2], n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    normalize3(n);
-    if (n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0.0)
-        for (int k = 0; k < 3; k++)
-            n[k] = -n[k];
-    return true;
-}
 
 /* Whether p lies within radius of the box of an object thinner than radius / 5 across two of its
  * extents (the thin case). */
@@ -137,31 +78,23 @@ static int cases_of(int x, int y, double radius)
     return bits ? bits : 1 << CASE_OPEN;
 }
 
-/* The reference for every pixel; returns the reference's own noise (the largest difference between
- * two sets of jitters over every 4th pixel), or -1. */
-static double build_reference(const gpu_scene *gs, double radius, double *noise_mean)
+/* The reference for every pixel (tools/reference/ao_reference.c), and where each surface lies for the
+ * hard cases; false when the reference's own noise was not measured. */
+static bool build_reference(const gpu_scene *gs, double radius, double *noise_mean, double *noise_max)
 {
-    double vp[16], inv[16], eye[3], p[3], n[3], sum = 0.0, worst = 0.0;
-    long checked = 0;
-    mat4d_from_float((const float *)gs->view.view_proj, vp);
-    mat4d_invert(vp, inv);
-    for (int k = 0; k < 3; k++)
-        eye[k] = gs->view.eye[k];
-    rng r = rng_seed(1), again = rng_seed(2);
+    ao_reference a;
+    ao_reference_begin(&a, &rays, (const float *)gs->view.view_proj, gs->view.eye, W, H, radius, G);
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
-            double *out = &reference[y * W + x];
-            *out = surface_at(inv, eye, x, y, p, n) ? open_share(p, n, radius, &r) : -1.0;
-            distance[y * W + x] = sqrt((p[0] - eye[0]) * (p[0] - eye[0]) + (p[1] - eye[1]) * (p[1] - eye[1]) +
-                                       (p[2] - eye[2]) * (p[2] - eye[2]));
+            double p[3], *out = &reference[y * W + x];
+            *out = ao_reference_pixel(&a, x, y, p);
+            distance[y * W + x] = *out < 0.0 ? -1.0
+                                             : sqrt((p[0] - a.eye[0]) * (p[0] - a.eye[0]) +
+                                                    (p[1] - a.eye[1]) * (p[1] - a.eye[1]) +
+                                                    (p[2] - a.eye[2]) * (p[2] - a.eye[2]));
             near_thin[y * W + x] = *out >= 0.0 && near_thin_object(p, radius);
-            if (*out >= 0.0 && (x + y * W) % 4 == 0) {
-                double e = fabs(open_share(p, n, radius, &again) - *out);
-                sum += e, worst = fmax(worst, e), checked++;
-            }
         }
-    *noise_mean = checked ? sum / (double)checked : 0.0;
-    return checked ? worst : -1.0;
+    return ao_reference_noise(&a, noise_mean, noise_max);
 }
 
 typedef struct error_stats {
@@ -174,13 +107,8 @@ typedef struct error_stats {
 static bool measure(const gpu_scene *gs, const char *radius, const char *samples, const char *blur, double bound,
                     error_stats *all, error_stats cases[CASE_COUNT])
 {
-    const char *args[] = {"--view", atoi(blur) > 0 ? "ao-blurred" : "ao", "--ao-radius", radius, "--ao-samples", samples,
-                          "--ao-blur", blur, NULL};
     static unsigned char rgba[4 * W * H];
-    app_embed *e = NULL;
-    bool ok = app_embed_open(&chapter_17, args, gs, &e) && app_embed_frame(e, gs, false, NULL) &&
-              fbo_read_rgba8(app_embed_target(e), 0, rgba);
-    app_embed_close(e);
+    bool ok = ssao_readback(gs, radius, samples, blur, rgba);
     *all = (error_stats){0};
     for (int c = 0; c < CASE_COUNT; c++)
         cases[c] = (error_stats){0};
@@ -212,13 +140,12 @@ int main(int argc, char **argv)
     hard_context_create(W, H);
     scene s;
     gpu_scene gs;
-    double noise_mean = 0.0, noise = -1.0;
+    double noise_mean = 0.0, noise = 0.0;
     bool ok = hard_expect(scene_load(argv[1], &s) && gpu_scene_create(&s, &gs), "load %s", argv[1]) &&
               hard_expect(gpu_scene_update(&gs, 0.0f, 5.0 / 256.0, W, H), "the view at %dx%d", W, H) &&
               hard_expect(ray_scene_build(&rays, &s, 0.0f), "the scene's triangles in double");
-    if (ok)
-        noise = build_reference(&gs, atof(argv[2]), &noise_mean);
-    ok = ok && hard_expect(noise >= 0.0 && noise_mean < 1.0 / 255.0,
+    bool traced = ok && build_reference(&gs, atof(argv[2]), &noise_mean, &noise);
+    ok = ok && hard_expect(traced && noise_mean < 1.0 / 255.0,
                            "the reference's own noise (%d rays): mean %.5f, max %.5f (1/255 = %.5f)", G * G,
                            noise_mean, noise, 1.0 / 255.0);
     const double max_mean = atof(argv[3]), bound = atof(argv[4]), max_beyond = atof(argv[5]);

@@ -2,6 +2,7 @@
 #include "bench_ambient.h"
 
 #include "app_embed.h"
+#include "bench_ambient_error.h"
 #include "bench_measure.h"
 #include "chapters.h"
 #include "frame_stats.h"
@@ -17,19 +18,14 @@
 typedef enum ambient_mode { AMBIENT_ON, AMBIENT_OFF, AMBIENT_ONLY } ambient_mode;
 static ambient_mode mode = AMBIENT_OFF;
 
-enum { SCENES = 2, CHAPTERS = 3, COLUMNS = 6 };
+enum { SCENES = 2, CHAPTERS = 3, COLUMNS = BENCH_AMBIENT_COLUMNS };
 static const char *const scene_names[SCENES] = {"default", "teapots_probes"};
 static const app_desc *const chapter_descs[CHAPTERS] = {&chapter_11, &chapter_17, &chapter_19};
 static const char *const chapter_names[CHAPTERS] = {"11_clustered", "17_ssao", "19_image_based_light"};
 /* The passes a row reports, by frame_timer_mark's names; the frame is column 0. */
 static const char *const pass_names[COLUMNS] = {"frame", "geometry", "light assignment", "ssao", "ssao blur", "lighting"};
 
-typedef struct ambient_row {
-    double ms[COLUMNS]; /* medians; NAN: the chapter has no such pass */
-    double first_extra_ms; /* the first frame over the median */
-    double bytes;          /* what the effect adds on the GPU */
-    int frames;
-} ambient_row;
+typedef bench_ambient_row ambient_row;
 
 void bench_ambient_reset(bool full) { mode = full ? AMBIENT_ON : AMBIENT_OFF; }
 
@@ -54,8 +50,10 @@ void bench_ambient_print_help(FILE *f)
 {
     fprintf(f, "  --ambient-sweep MODE   on: after the sweeps, chapter 17's SSAO and chapter 19's probes beside\n"
                "                        chapter 11 on the default scene and teapots_probes: their passes' time\n"
-               "                        and memory (DIR/bench_ambient.md and .csv); off; only: nothing else\n"
-               "                        (--full: on; otherwise off)\n");
+               "                        and memory; then SSAO's directions x blur timed and compared with\n"
+               "                        traced occlusion (160x120), and the split sum's error by roughness\n"
+               "                        against Monte Carlo (DIR/bench_ambient.md, bench_ambient*.csv);\n"
+               "                        off; only: nothing else (--full: on; otherwise off)\n");
 }
 
 static double pass_ms(const frame_times *t, const char *name)
@@ -70,15 +68,17 @@ static double pass_ms(const frame_times *t, const char *name)
  * and the depth-normal pre-pass's RGBA8 + D32F, made for either renderer. */
 static double ssao_bytes(int w, int h) { return (8.0 + 8.0 + 4.0 + 4.0) * w * h; }
 
-/* One scene: the three chapters open together, drawn in turn, frame by frame. */
-static bool run_scene(const bench_options *o, const char *name, ambient_row rows[CHAPTERS])
+/* What chapter `desc` adds on the GPU over chapter 11's frame (its own targets or probes). */
+static double added_bytes(const app_desc *desc, const bench_options *o)
 {
-    char path[SCENE_PATH_MAX];
-    bench_options_find_scene(o, name, path, sizeof path);
-    scene sc;
-    gpu_scene gs;
-    if (!scene_load(path, &sc))
-        return false;
+    if (desc == &chapter_17)
+        return ssao_bytes(o->width, o->height);
+    return desc == &chapter_19 ? (double)chapter_19_probe_bytes() : 0.0;
+}
+
+bool bench_ambient_time(const bench_options *o, const gpu_scene *gs, int count, const app_desc *const descs[],
+                        const char *const *const args[], bench_ambient_row rows[])
+{
     app_embed *e[CHAPTERS] = {0};
     frame_timer timers[CHAPTERS] = {0};
     /* at least 2 untimed frames: with 1, the first timed frame of a chapter drawn after the others
@@ -86,16 +86,14 @@ static bool run_scene(const bench_options *o, const char *name, ambient_row rows
     const int warmup = o->warmup > 2 ? o->warmup : 2, frames = o->frames > 0 ? o->frames : 1;
     double *t = calloc((size_t)CHAPTERS * COLUMNS * (size_t)frames, sizeof *t);
     double first[CHAPTERS] = {0};
-    bool ok = t && gpu_scene_create(&sc, &gs);
-    bool made = ok;
-    ok = ok && gpu_scene_update(&gs, 0.0f, LIGHT_DEFAULT_CUTOFF, o->width, o->height);
-    for (int c = 0; ok && c < CHAPTERS; c++)
-        ok = frame_timer_create(&timers[c]) && app_embed_open(chapter_descs[c], NULL, &gs, &e[c]);
+    bool ok = t && count <= CHAPTERS;
+    for (int c = 0; ok && c < count; c++)
+        ok = frame_timer_create(&timers[c]) && app_embed_open(descs[c], args ? args[c] : NULL, gs, &e[c]);
     for (int k = 0; ok && k < warmup + frames; k++)
-        for (int c = 0; ok && c < CHAPTERS; c++) {
+        for (int c = 0; ok && c < count; c++) {
             double t0 = bench_measure_now_ms();
             frame_timer_begin(&timers[c]);
-            ok = app_embed_frame(e[c], &gs, false, NULL);
+            ok = app_embed_frame(e[c], gs, false, NULL);
             frame_timer_end(&timers[c]);
             glFinish();
             double ms = bench_measure_now_ms() - t0;
@@ -108,7 +106,7 @@ static bool run_scene(const bench_options *o, const char *name, ambient_row rows
             for (int j = 1; j < COLUMNS; j++)
                 slot[(size_t)j * (size_t)frames + (size_t)(k - warmup)] = pass_ms(&timers[c].last, pass_names[j]);
         }
-    for (int c = 0; ok && c < CHAPTERS; c++) {
+    for (int c = 0; ok && c < count; c++) {
         for (int j = 0; j < COLUMNS; j++) {
             double *col = t + ((size_t)c * COLUMNS + (size_t)j) * (size_t)frames;
             int n = 0;
@@ -119,16 +117,31 @@ static bool run_scene(const bench_options *o, const char *name, ambient_row rows
         }
         rows[c].first_extra_ms = first[c] - rows[c].ms[0];
         rows[c].frames = frames;
-        rows[c].bytes = c == 1 ? ssao_bytes(o->width, o->height) : c == 2 ? (double)chapter_19_probe_bytes() : 0.0;
+        rows[c].bytes = added_bytes(descs[c], o); /* while the chapter is open: its probes are */
     }
-    for (int c = 0; c < CHAPTERS; c++) {
+    for (int c = 0; c < count; c++) {
         app_embed_close(e[c]);
         frame_timer_destroy(&timers[c]);
     }
+    free(t);
+    return ok;
+}
+
+/* One scene: the three chapters open together, drawn in turn, frame by frame. */
+static bool run_scene(const bench_options *o, const char *name, ambient_row rows[CHAPTERS])
+{
+    char path[SCENE_PATH_MAX];
+    bench_options_find_scene(o, name, path, sizeof path);
+    scene sc;
+    gpu_scene gs;
+    if (!scene_load(path, &sc))
+        return false;
+    bool made = gpu_scene_create(&sc, &gs);
+    bool ok = made && gpu_scene_update(&gs, 0.0f, LIGHT_DEFAULT_CUTOFF, o->width, o->height) &&
+              bench_ambient_time(o, &gs, CHAPTERS, chapter_descs, NULL, rows);
     if (made)
         gpu_scene_destroy(&gs);
     scene_destroy(&sc);
-    free(t);
     return ok;
 }
 
@@ -193,5 +206,5 @@ bool bench_ambient_run(const bench_options *o)
                     scene_names[s], chapter_names[c], rows[s][c].ms[0], rows[s][c].ms[5], rows[s][c].ms[3],
                     rows[s][c].ms[4], rows[s][c].first_extra_ms, rows[s][c].bytes / 1048576.0);
     }
-    return ok && write_results(o, rows);
+    return ok && write_results(o, rows) && bench_ambient_error_run(o);
 }

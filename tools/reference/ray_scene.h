@@ -1,7 +1,7 @@
-/* ray_scene.h - the tests' exact ray caster: a scene's triangles in world space, in double precision,
- * each object under a bounding-volume hierarchy, so a reference can trace every pixel of a scene of
- * 300,000 triangles (the teapots) in seconds. The hits are those of testing every triangle: the
- * hierarchy only skips triangles whose boxes the ray misses.
+/* ray_scene.h - the exact ray caster behind the tests' and the benchmark's references: a scene's
+ * triangles in world space, in double precision, each object under a bounding-volume hierarchy, so a
+ * reference can trace every pixel of a scene of 300,000 triangles (the teapots) in seconds. The hits
+ * are those of testing every triangle: the hierarchy only skips triangles whose boxes the ray misses.
  *
  *   ray_scene_build(rs, s, time)       the scene's objects at `time`; false on a mesh error
  *   ray_scene_trace(rs, o, d, tmin, tmax, filter, tri)
@@ -11,8 +11,8 @@
  *                                      also skips `cast off` objects
  *   ray_scene_destroy(rs)
  */
-#ifndef TESTS_RAY_SCENE_H
-#define TESTS_RAY_SCENE_H
+#ifndef TOOLS_RAY_SCENE_H
+#define TOOLS_RAY_SCENE_H
 
 #include "scene.h"
 
