@@ -30,7 +30,8 @@
  *   target becomes RGBA16F (half-float octahedral normal after the normal map, -1 - roughness after the
  *   metal-rough map; Blinn-Phong's shininess stays positive), the light buffer three RGBA16F targets
  *   (C, A, B); rgb only. 12 + 24 bytes a pixel.
- * Views: lit; light, the diffuse light buffer D; specular, S as the combine pass reads it back.
+ * Views: lit; light, the diffuse light buffer D (pbr: C); specular, S as the combine pass reads it
+ *   back (pbr: A + B).
  * --bench's shaded_pixels: the second geometry pass's fragments (GL_SAMPLES_PASSED).
  * Read docs/15_light_prepass.md alongside.
  */
