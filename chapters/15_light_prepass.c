@@ -91,8 +91,8 @@ static bool scene_has_pbr(const app *a)
 
 static bool init(app *a)
 {
-    state.rgb = strcmp(app_extra(a, "specular"), "rgb") == 0;
     state.pbr = scene_has_pbr(a);
+    state.rgb = state.pbr || strcmp(app_extra(a, "specular"), "rgb") == 0; /* mono: refused for deferred */
     const char *defines = state.pbr ? "LIGHT_PREPASS_PBR 1" : NULL;
     if (state.pbr)
         log_info("metallic-roughness scene: thin pass RGBA16F + depth, 12 bytes a pixel; light buffer "
