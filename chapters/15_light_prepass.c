@@ -25,7 +25,13 @@
  *         rebuilds S as D's colour scaled to that luminance. Exact for one light (its S and D have
  *         the same colour); where lights of different colours overlap, a highlight takes the colour
  *         of the mixed diffuse light instead of its own light's.
- * Views: lit; light, the diffuse light buffer D; specular, S as the combine pass reads it back.
+ * Metallic-roughness materials (LIGHT_PREPASS_PBR, for a scene that has any): Schlick's Fresnel is
+ *   linear in F0, so three sums that know no material make pbr_brdf exact in the second pass: the thin
+ *   target becomes RGBA16F (half-float octahedral normal after the normal map, -1 - roughness after the
+ *   metal-rough map; Blinn-Phong's shininess stays positive), the light buffer three RGBA16F targets
+ *   (C, A, B); rgb only. 12 + 24 bytes a pixel.
+ * Views: lit; light, the diffuse light buffer D (pbr: C); specular, S as the combine pass reads it
+ *   back (pbr: A + B).
  * --bench's shaded_pixels: the second geometry pass's fragments (GL_SAMPLES_PASSED).
  * Read docs/15_light_prepass.md alongside.
  */
@@ -67,23 +73,37 @@ static const gl_pass_state accumulation_pass = {.depth_write = false};
 static const gl_pass_state combine_pass = {.cull = GL_BACK, .depth_func = GL_EQUAL};
 
 static struct {
-    fbo thin;  /* RGBA8 normal + shininess; depth: a->target's */
-    fbo light; /* RGBA16F diffuse (+ specular luminance); rgb: and RGBA16F specular */
+    fbo thin;  /* RGBA8 normal + shininess (pbr: RGBA16F); depth: a->target's */
+    fbo light; /* RGBA16F diffuse (+ specular luminance); rgb: and RGBA16F specular; pbr: and B */
     clusters c;
     GLuint thin_program, accumulation_program, combine_program;
     bool rgb; /* --specular rgb */
+    bool pbr; /* the scene has metallic-roughness materials: LIGHT_PREPASS_PBR's buffers and shaders */
 } state;
+
+static bool scene_has_pbr(const app *a)
+{
+    for (int m = 0; m < a->gs.src->material_count; m++)
+        if (a->gs.src->materials[m].pbr)
+            return true;
+    return false;
+}
 
 static bool init(app *a)
 {
-    state.rgb = strcmp(app_extra(a, "specular"), "rgb") == 0;
+    state.pbr = scene_has_pbr(a);
+    state.rgb = state.pbr || strcmp(app_extra(a, "specular"), "rgb") == 0; /* mono: refused for deferred */
+    const char *defines = state.pbr ? "LIGHT_PREPASS_PBR 1" : NULL;
+    if (state.pbr)
+        log_info("metallic-roughness scene: thin pass RGBA16F + depth, 12 bytes a pixel; light buffer "
+                 "C, A, B in three RGBA16F, 24 bytes a pixel");
     a->pass_state = &combine_pass; /* the overlay shows it */
     a->work_name = "second geometry pass fragments";
     /* chapter 11's lists, made where it makes them by default */
     const clusters_desc lists = {.compute = gl_have_compute()};
-    state.thin_program = gl_program_load("forward.vert", "light_prepass_thin.frag", NULL);
-    state.accumulation_program = gl_program_load("fullscreen.vert", "light_prepass_accum.frag", NULL);
-    state.combine_program = gl_program_load("forward.vert", "light_prepass_combine.frag", NULL);
+    state.thin_program = gl_program_load("forward.vert", "light_prepass_thin.frag", defines);
+    state.accumulation_program = gl_program_load("fullscreen.vert", "light_prepass_accum.frag", defines);
+    state.combine_program = gl_program_load("forward.vert", "light_prepass_combine.frag", defines);
     return state.thin_program && state.accumulation_program && state.combine_program &&
            clusters_create(&state.c, &lists);
 }
@@ -96,18 +116,19 @@ static bool targets_follow(const app *a)
     if (!state.thin.id || state.thin.depth != t->depth || state.thin.width != t->width ||
         state.thin.height != t->height) {
         fbo_destroy(&state.thin);
-        const fbo_desc thin = {.color_formats = {GL_RGBA8}, .color_count = 1,
+        const fbo_desc thin = {.color_formats = {state.pbr ? GL_RGBA16F : GL_RGBA8}, .color_count = 1,
                                .depth_format = GL_DEPTH_COMPONENT32F, .shared_depth = t->depth,
                                .name = "thin pass"};
         if (!fbo_create(&state.thin, &thin, t->width, t->height))
             return false;
     }
-    const int targets = state.rgb ? 2 : 1;
+    const int targets = state.pbr ? 3 : state.rgb ? 2 : 1;
     if (state.light.id && state.light.color_count == targets && state.light.width == t->width &&
         state.light.height == t->height)
         return true;
     fbo_destroy(&state.light);
-    const fbo_desc light = {.color_formats = {GL_RGBA16F, GL_RGBA16F}, .color_count = targets, .name = "light buffer"};
+    const fbo_desc light = {.color_formats = {GL_RGBA16F, GL_RGBA16F, GL_RGBA16F}, .color_count = targets,
+                            .name = "light buffer"};
     return fbo_create(&state.light, &light, t->width, t->height);
 }
 
@@ -176,6 +197,8 @@ static bool combine(app *a)
     gpu_scene_bind_objects(&a->gs, p, SHADER_UNIT_OBJECTS);
     bind_texture(p, "u_light_diffuse", SHADER_UNIT_GBUFFER, state.light.color[0]);
     bind_texture(p, "u_light_specular", SHADER_UNIT_GBUFFER + 1, state.rgb ? state.light.color[1] : 0);
+    if (state.pbr)
+        bind_texture(p, "u_light_fresnel", SHADER_UNIT_GBUFFER + 2, state.light.color[2]);
     glUniform1i(glGetUniformLocation(p, "u_specular_rgb"), state.rgb);
     glUniform1i(glGetUniformLocation(p, "u_view"), view_of(a));
     glUniform1i(glGetUniformLocation(p, "u_output_linear"), a->linear_output);
@@ -204,6 +227,10 @@ static bool key(app *a, int k)
     (void)a;
     if (k != 'B')
         return false;
+    if (state.pbr) {
+        log_info("light buffer specular: rgb (a metallic-roughness scene needs all three sums)");
+        return true;
+    }
     state.rgb = !state.rgb;
     log_info("light buffer specular: %s", state.rgb ? "rgb (two targets)" : "mono (one channel)");
     return true;
@@ -220,21 +247,16 @@ static void cleanup(app *a)
     gl_program_destroy(&state.thin_program);
 }
 
-/* The light buffer sums each light's terms before any material meets them: one highlight exponent per
- * pixel. A metallic-roughness highlight needs the material's Fresnel and roughness inside every light's
- * term, which a pre-pass cannot factor out (docs/18_pbr_materials.md): such a scene is refused. */
+/* A metallic-roughness highlight needs its specular sums A and B in colour (docs/15_light_prepass.md):
+ * the one-channel light buffer has no room for them, so --specular mono refuses such a scene. */
 static bool accepts_scene(const app *a)
 {
-    if (!app_renderer_is(a, "deferred"))
+    if (!app_renderer_is(a, "deferred") || strcmp(app_extra(a, "specular"), "mono") != 0 || !scene_has_pbr(a))
         return true;
-    for (int m = 0; m < a->gs.src->material_count; m++)
-        if (a->gs.src->materials[m].pbr) {
-            log_error("%s: material '%s' is metallic-roughness; a light pre-pass sums Blinn-Phong terms only: "
-                      "use --renderer forward, or chapter 18",
-                      a->gs.src->path, a->gs.src->materials[m].name);
-            return false;
-        }
-    return true;
+    log_error("%s: --specular mono cannot hold a metallic-roughness highlight (its two specular sums are "
+              "colours): use --specular rgb",
+              a->gs.src->path);
+    return false;
 }
 
 const app_desc chapter_15 = {.cli = &cli, .accepts_scene = accepts_scene, .init = init, .resize = resize,

@@ -86,6 +86,29 @@ float pbr_roughness(float shininess)
     return max(r, PBR_ROUGHNESS_MIN);
 }
 
+// pbr_brdf's factors that know only the roughness and the directions (chapter 15's light buffer sums
+// them before the material): GGX's D and the visibility V, a2 = alpha^2 = roughness^4, n.l > 0.
+void pbr_distribution_visibility(float ndl, float ndv, float ndh, float a2, out float D, out float V)
+{
+    float d = ndh * ndh * (a2 - 1.0) + 1.0;
+    D = a2 / (PI * d * d);
+    V = 0.5 / (ndl * sqrt(ndv * ndv * (1.0 - a2) + a2) + ndv * sqrt(ndl * ndl * (1.0 - a2) + a2));
+}
+
+// alpha^2 from the material's shininess (-1 - roughness).
+float pbr_alpha2(float shininess)
+{
+    float alpha = pbr_roughness(shininess);
+    alpha *= alpha;
+    return alpha * alpha;
+}
+
+// A normal turned from the eye (interpolation, a normal map) gives n.v <= 0: taken as grazing.
+float pbr_ndv(vec3 n, vec3 v)
+{
+    return clamp(dot(n, v), 1e-4, 1.0);
+}
+
 // pi times the metallic-roughness BRDF for unit n, v, l with n.l > 0: GGX distribution D, Smith's
 // height-correlated visibility V (D V is D G / (4 n.l n.v)), Schlick's Fresnel F with F0 = mix(0.04,
 // base, metallic), and Lambert's diffuse times (1 - metallic), weighted by what Fresnel lets into the
@@ -96,18 +119,14 @@ float pbr_roughness(float shininess)
 vec3 pbr_brdf(vec3 n, vec3 v, vec3 l, vec3 base, float specular, float shininess)
 {
     float metallic = pbr_metallic(specular);
-    float alpha = pbr_roughness(shininess);
-    alpha *= alpha;
-    float a2 = alpha * alpha;
+    float a2 = pbr_alpha2(shininess);
     vec3 h = safe_normalize(l + v, n);
     float ndl = clamp(dot(n, l), 0.0, 1.0);
-    // A normal turned from the eye (interpolation, a normal map) gives n.v <= 0: taken as grazing.
-    float ndv = clamp(dot(n, v), 1e-4, 1.0);
+    float ndv = pbr_ndv(n, v);
     float ndh = clamp(dot(n, h), 0.0, 1.0);
     float vdh = clamp(dot(v, h), 0.0, 1.0);
-    float d = ndh * ndh * (a2 - 1.0) + 1.0;
-    float D = a2 / (PI * d * d);
-    float V = 0.5 / (ndl * sqrt(ndv * ndv * (1.0 - a2) + a2) + ndv * sqrt(ndl * ndl * (1.0 - a2) + a2));
+    float D, V;
+    pbr_distribution_visibility(ndl, ndv, ndh, a2, D, V);
     vec3 f0 = mix(vec3(0.04), base, metallic);
     vec3 F = f0 + (1.0 - f0) * pow(1.0 - vdh, 5.0);
     vec3 into = (1.0 - f0) * (1.0 - pow(1.0 - ndl, 5.0)); // 1 - F(n.l)

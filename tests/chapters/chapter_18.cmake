@@ -67,13 +67,6 @@ function(chapter_18_tests)
     PASS_REGULAR_EXPRESSION "1-7 +view: lit, albedo.*\n  - +halve the exposure.*IJKL +move every light"
     FAIL_REGULAR_EXPRESSION "halve the generated lights")
 
-  # The light pre-pass cannot sum a metallic-roughness highlight: refused, exit 2, with why.
-  if(TARGET 15_light_prepass)
-    add_test(NAME chapters.18_prepass_refuses COMMAND 15_light_prepass --headless --frames 1 ${PBR}
-      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-    set_tests_properties(chapters.18_prepass_refuses PROPERTIES LABELS golden
-      PASS_REGULAR_EXPRESSION "is metallic-roughness; a light pre-pass sums Blinn-Phong terms only")
-  endif()
   # A fixed-point G-buffer cannot hold these materials: refused, exit 2.
   add_test(NAME chapters.18_compact_refused COMMAND ${C} --headless --frames 1 --gbuffer compact ${PBR}
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
