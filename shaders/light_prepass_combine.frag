@@ -4,7 +4,9 @@
 // buffer at its pixel with its own material: ambient + albedo * diffuse + specular * specular light.
 // Mono (one specular channel, u_specular_rgb false): the specular light's colour is taken to be the
 // diffuse light's, scaled to the stored luminance: right for one light, or lights of one colour.
+// A metallic-roughness material's emissive (chapter 18) is added here, once, beside the ambient.
 #include "shading.glsl"
+#include "material_maps.glsl"
 
 flat in vec3 v_albedo;
 flat in float v_specular;
@@ -38,6 +40,6 @@ void main()
     vec3 s = specular_light(d, pixel);
     vec3 c = u_view == VIEW_DIFFUSE_LIGHT    ? d.rgb
              : u_view == VIEW_SPECULAR_LIGHT ? s
-                                             : shade_ambient(v_albedo) + v_albedo * d.rgb + v_specular * s;
+                                             : shade_ambient(v_albedo) + material_emissive() + v_albedo * d.rgb + v_specular * s;
     o_color = u_output_linear ? vec4(c, 1.0) : vec4(display_encode(c), 1.0);
 }

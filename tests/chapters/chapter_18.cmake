@@ -64,7 +64,7 @@ function(chapter_18_tests)
   # --help (and F1) lists the chapter's keys, and not the shared - and + it takes over.
   add_test(NAME chapters.18_help_keys COMMAND ${C} --help WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(chapters.18_help_keys PROPERTIES LABELS golden
-    PASS_REGULAR_EXPRESSION "1-7 +view: lit, albedo.*\n  - +halve the exposure.*IJKL +move every light"
+    PASS_REGULAR_EXPRESSION "1-8 +view: lit, albedo.*\n  - +halve the exposure.*IJKL +move every light"
     FAIL_REGULAR_EXPRESSION "halve the generated lights")
 
   # The light pre-pass cannot sum a metallic-roughness highlight: refused, exit 2, with why.
