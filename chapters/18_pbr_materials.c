@@ -30,6 +30,7 @@
 #include "present_pass.h"
 
 #include <math.h>
+#include <stdio.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
 /* lit, then the G-buffer's channels: their index is pbr_channels.frag's u_channel. */
@@ -115,6 +116,9 @@ static bool frame(app *a)
     /* 1. geometry pass: the materials' images applied, the surface stored (the reference layout) */
     if (!gbuffer_render(&state.g, &a->gs))
         return false;
+    snprintf(a->overlay_lines, sizeof a->overlay_lines, "G-buffer %s: %d bytes a pixel%s",
+             gbuffer_layout_name(state.g.desc.layout), gbuffer_pixel_bytes(&state.g),
+             state.g.desc.emissive ? ", with RT2 (emissive)" : "");
     if (!app_view_is(a, "lit"))
         return draw_channel(a);
 
