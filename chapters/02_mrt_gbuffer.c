@@ -72,12 +72,16 @@ static bool mrt_create(int width, int height)
     const bool stencil = depth == GL_DEPTH24_STENCIL8;
     fbo *f = &state.gbuf.fbo;
     fbo_destroy(f);
-    *f = (fbo){.color_count = 2, .owns_depth = true, .width = width, .height = height, .samples = 1};
+    const bool emissive = state.gbuf.desc.emissive; /* a scene with emissive materials (chapter 18) */
+    *f = (fbo){.color_count = emissive ? 3 : 2, .owns_depth = true, .width = width, .height = height, .samples = 1};
 
     /* 1. RT0 albedo (GL_SRGB8_ALPHA8: 8 bits on the sRGB curve), RT1 the octahedral normal,
      *    specular and shininess (GL_RGBA8; half floats in the reference layout) */
     f->color[0] = target_texture(l->albedo_format, GL_RGBA, GL_FLOAT, width, height);
     f->color[1] = target_texture(l->normal_format, GL_RGBA, GL_FLOAT, width, height);
+    /*    and RT2, the emissive, only where the scene has some (GL_RGBA16F) */
+    if (emissive)
+        f->color[2] = target_texture(GBUFFER_EMISSIVE_FORMAT, GL_RGBA, GL_FLOAT, width, height);
     /* 2. depth as a texture, not chapter 01's renderbuffer: the lighting pass reads it back */
     f->depth = stencil ? target_texture(depth, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, width, height)
                        : target_texture(depth, GL_DEPTH_COMPONENT, GL_FLOAT, width, height);
@@ -88,10 +92,12 @@ static bool mrt_create(int width, int height)
     glBindFramebuffer(GL_FRAMEBUFFER, f->id);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, f->color[0], 0);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, f->color[1], 0);
+    if (emissive)
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, f->color[2], 0);
     glFramebufferTexture2D(GL_FRAMEBUFFER, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                            GL_TEXTURE_2D, f->depth, 0);
-    static const GLenum outputs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(2, outputs);
+    static const GLenum outputs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glDrawBuffers(f->color_count, outputs);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE)

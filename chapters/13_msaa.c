@@ -257,7 +257,7 @@ static bool draw_forward(app *a, GLuint target)
 static void print_report(const app *a)
 {
     const bool deferred = app_renderer_is(a, "deferred");
-    const int per_sample = deferred ? gbuffer_layout_bytes(state.g.desc.layout, false) : 12; /* RGBA16F + D32F */
+    const int per_sample = deferred ? gbuffer_pixel_bytes(&state.g) : 12; /* RGBA16F + D32F; RT2 counted */
     const double bytes = deferred ? gbuffer_memory_bytes(&state.g) : (double)per_sample * state.samples * a->width * a->height;
     printf("msaa: renderer=%s samples=%d bytes_per_sample=%d bytes_per_pixel=%d msaa_mib=%.2f edge_pixels=%ld "
            "edge_fraction=%.5f\n",

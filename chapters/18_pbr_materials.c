@@ -14,7 +14,8 @@
  *      it for a scene with metallic-roughness materials): RT0 base colour (sRGB) + occlusion, RT1 the
  *      octahedral normal in two half floats, metallic, and -1 - roughness, whose sign marks the material
  *   2. the lighting summed in linear radiance, then presented with an exposure (keys - and +)
- *   3. the channel views: what the geometry pass stored, one channel at a time (keys 1 to 7, --view)
+ *   3. the channel views: what the geometry pass stored, one channel at a time (keys 1 to 8, --view);
+ *      the emissive is RT2, a third target the G-buffer has only for a scene with emissive materials
  *   4. keys that change the light: the ambient (T, Y), and every light moved together (I J K L,
  *      Up, Down), so a highlight can be walked across a surface
  * Read docs/18_pbr_materials.md alongside.
@@ -29,16 +30,18 @@
 #include "present_pass.h"
 
 #include <math.h>
+#include <stdio.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
 /* lit, then the G-buffer's channels: their index is pbr_channels.frag's u_channel. */
-static const char *const views[] = {"lit", "albedo", "metallic", "roughness", "normal", "occlusion", "depth", NULL};
+static const char *const views[] = {"lit",    "albedo", "metallic", "roughness", "normal",
+                                    "occlusion", "depth", "emissive", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
     .program = "18_pbr_materials",
     .summary = "Chapter 18: textured metallic-roughness materials (GGX, Smith, Schlick) through chapter 11's "
-               "clustered deferred frame, with the G-buffer's channels on keys 1 to 7.",
+               "clustered deferred frame, with the G-buffer's channels on keys 1 to 8.",
     .renderers = renderers,
     .views = views,
     .default_scene = "assets/scenes/pbr_teapots.scene", /* textured: the lesson needs images */
@@ -113,6 +116,9 @@ static bool frame(app *a)
     /* 1. geometry pass: the materials' images applied, the surface stored (the reference layout) */
     if (!gbuffer_render(&state.g, &a->gs))
         return false;
+    snprintf(a->overlay_lines, sizeof a->overlay_lines, "G-buffer %s: %d bytes a pixel%s",
+             gbuffer_layout_name(state.g.desc.layout), gbuffer_pixel_bytes(&state.g),
+             state.g.desc.emissive ? ", with RT2 (emissive)" : "");
     if (!app_view_is(a, "lit"))
         return draw_channel(a);
 
@@ -158,7 +164,7 @@ static void move_lights(app *a, float dx, float dy, float dz)
 
 static bool key(app *a, int k)
 {
-    if (k >= '1' && k <= '7') { /* the views by number: 1 lit, 2 albedo ... 7 depth */
+    if (k >= '1' && k <= '8') { /* the views by number: 1 lit, 2 albedo ... 7 depth, 8 emissive */
         a->view = k - '1';
         log_info("view: %s", views[a->view]);
         return true;

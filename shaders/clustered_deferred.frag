@@ -25,7 +25,8 @@ void main()
     vec3 c = vec3(0.0);
     if (u_view_mode == SHADER_VIEW_LIT) {
         vec3 v = safe_normalize(u_eye - s.position, s.normal);
-        c = cluster_shade(range, s.position, s.normal, v, s.albedo, s.specular, s.shininess, s.occlusion);
+        c = cluster_shade(range, s.position, s.normal, v, s.albedo, s.specular, s.shininess, s.occlusion) +
+            s.emissive;
     }
     o_color = cluster_output(u_view_mode, u_output_linear, range, depth, c);
 }

@@ -29,6 +29,7 @@ void main()
     vec3 n = s.normal;
     vec3 v = safe_normalize(u_eye - s.position, n);
     vec3 c = shade_ambient(s.albedo * s.occlusion);
+    c += s.emissive; // once per pixel, beside the ambient (0 but for an emissive material)
     int evaluated = 0;
     for (int i = 0; i < u_light_count; i++, evaluated++)
         c += shade_light(light_fetch(i), light_fetch_cone(i), s.position, n, v, s.albedo, s.specular, s.shininess);

@@ -45,6 +45,7 @@ void main()
 #endif
     vec3 v = safe_normalize(u_eye - v_world, n);
     vec3 c = shade_ambient_at(v_world, n, v, albedo, specular, shininess, occlusion);
+    c += material_emissive(); // once per pixel, beside the ambient (0 but for an emissive material)
     int first = 0, count = u_light_count;
     if (u_use_list) {
         first = texelFetch(u_light_list, 2 * v_object).r;

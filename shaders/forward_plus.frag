@@ -40,7 +40,7 @@ void main()
         n = -n;
     vec3 v = safe_normalize(u_eye - v_world, n);
     ivec2 range = cluster_range(cluster_index(gl_FragCoord.xy, cluster_view_depth(v_world)));
-    vec3 c = cluster_shade(range, v_world, n, v, albedo, specular, shininess, occlusion);
+    vec3 c = cluster_shade(range, v_world, n, v, albedo, specular, shininess, occlusion) + material_emissive();
     o_color = vec4(c, texelFetch(u_objects, SHADER_OBJECT_TEXELS * v_object + SHADER_OBJECT_TEXEL_OPACITY).y);
 }
 #else
@@ -55,7 +55,7 @@ void main()
         float specular = v_specular, shininess = v_shininess, occlusion;
         material_apply_maps(albedo, specular, shininess, n, occlusion);
         vec3 v = safe_normalize(u_eye - v_world, n);
-        c = cluster_shade(range, v_world, n, v, albedo, specular, shininess, occlusion);
+        c = cluster_shade(range, v_world, n, v, albedo, specular, shininess, occlusion) + material_emissive();
     }
     o_color = cluster_output(u_view_mode, u_output_linear, range, depth, c);
 }

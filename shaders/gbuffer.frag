@@ -3,7 +3,8 @@
 // written to two render targets at once (vertex shader: forward.vert, so depth is bit-identical).
 // GBUFFER_NORMAL (a SHADER_GBUFFER_NORMAL_* value, set by common/render/gbuffer.c from the layout) says how
 // RT1 holds the normal; shaders/gbuffer_read.glsl undoes each. GBUFFER_EXACT: the benchmark's
-// reference instead, the float position and normal into two float targets.
+// reference instead, the float position and normal into two float targets. GBUFFER_EMISSIVE (a scene
+// with emissive materials, common/render/gbuffer.h): a third target, RT2, the surface's emissive.
 #include "shading.glsl"
 #include "octahedral.glsl"
 #include "gbuffer_encode.glsl"
@@ -21,6 +22,9 @@ flat in float v_shininess;
 
 layout(location = 0) out vec4 o_albedo;           // GL_COLOR_ATTACHMENT0: albedo (+ specular in a)
 layout(location = 1) out vec4 o_normal_material;  // GL_COLOR_ATTACHMENT1: normal (+ material)
+#ifdef GBUFFER_EMISSIVE
+layout(location = 2) out vec4 o_emissive;         // GL_COLOR_ATTACHMENT2: emissive (R11F_G11F_B10F)
+#endif
 
 void main()
 {
@@ -30,6 +34,9 @@ void main()
     vec3 albedo = v_albedo;
     float specular = v_specular, shininess = v_shininess, occlusion;
     material_apply_maps(albedo, specular, shininess, n, occlusion);
+#ifdef GBUFFER_EMISSIVE
+    o_emissive = vec4(material_emissive(), 1.0);
+#endif
 #if defined(GBUFFER_EXACT)
     o_albedo = vec4(v_world, 1.0);
     o_normal_material = vec4(n, 1.0);

@@ -14,6 +14,8 @@
 uniform GBUFFER_SAMPLER u_gbuffer_albedo; // SRGB8_ALPHA8 (texelFetch returns linear albedo) or RGBA8
 uniform GBUFFER_SAMPLER u_gbuffer_normal; // the normal, and the material where RT0 has no room for it
 uniform GBUFFER_SAMPLER u_gbuffer_depth;  // window-space depth in [0,1]
+uniform GBUFFER_SAMPLER u_gbuffer_emissive; // RT2 R11F_G11F_B10F: emissive, where u_gbuffer_has_emissive
+uniform bool u_gbuffer_has_emissive;   // the scene has emissive materials, so the G-buffer has RT2
 uniform int u_gbuffer_normal_encoding; // SHADER_GBUFFER_NORMAL_*: how RT1 holds the normal
 uniform bool u_gbuffer_reversed_z;     // near 1, far 0 (glClipControl: NDC z = window depth)
 uniform mat4 u_inv_view_proj;       // of the projection the depth was written with
@@ -27,6 +29,7 @@ struct surface {
     float specular;
     float shininess;
     float occlusion; // of the ambient light: an occlusion map's (chapter 18), else 1
+    vec3 emissive;   // linear radiance the surface gives off (chapter 18's RT2), else 0
     bool background; // nothing was drawn here (depth is the clear value: 1, or 0 reversed)
 };
 
@@ -73,6 +76,7 @@ surface gbuffer_decode(vec4 albedo, vec4 nm, float depth, vec3 position)
     s.position = position;
     s.albedo = albedo.rgb;
     s.occlusion = 1.0;
+    s.emissive = vec3(0.0);
     if (u_gbuffer_normal_encoding == SHADER_GBUFFER_NORMAL_HALF) {
         s.occlusion = albedo.a;
         s.normal = octahedral_decode(nm.xy);
@@ -91,20 +95,30 @@ surface gbuffer_decode(vec4 albedo, vec4 nm, float depth, vec3 position)
     return s;
 }
 
+// RT2's emissive where the G-buffer has it; 0 where the scene has none (no RT2 is made then).
+vec3 gbuffer_emissive(ivec2 pixel, int sample_index)
+{
+    return u_gbuffer_has_emissive ? texelFetch(u_gbuffer_emissive, pixel, sample_index).rgb : vec3(0.0);
+}
+
 // The surface at a pixel whose depth the caller has already read (and its position computed).
 surface gbuffer_read_at(ivec2 pixel, float depth, vec3 position)
 {
-    return gbuffer_decode(texelFetch(u_gbuffer_albedo, pixel, 0), texelFetch(u_gbuffer_normal, pixel, 0),
-                          depth, position);
+    surface s = gbuffer_decode(texelFetch(u_gbuffer_albedo, pixel, 0), texelFetch(u_gbuffer_normal, pixel, 0),
+                               depth, position);
+    s.emissive = gbuffer_emissive(pixel, 0);
+    return s;
 }
 
 // One sample of a multisampled pixel, at the position the caller rebuilt for it (plain textures
 // have sample 0 only: there the index is the mip level).
 surface gbuffer_read_sample(ivec2 pixel, int sample_index, vec3 position)
 {
-    return gbuffer_decode(texelFetch(u_gbuffer_albedo, pixel, sample_index),
-                          texelFetch(u_gbuffer_normal, pixel, sample_index),
-                          texelFetch(u_gbuffer_depth, pixel, sample_index).r, position);
+    surface s = gbuffer_decode(texelFetch(u_gbuffer_albedo, pixel, sample_index),
+                               texelFetch(u_gbuffer_normal, pixel, sample_index),
+                               texelFetch(u_gbuffer_depth, pixel, sample_index).r, position);
+    s.emissive = gbuffer_emissive(pixel, sample_index);
+    return s;
 }
 
 surface gbuffer_read(ivec2 pixel)

@@ -6,7 +6,8 @@
 // diffuse light's, scaled to the stored luminance: right for one light, or lights of one colour.
 // LIGHT_PREPASS_PBR (a scene with metallic-roughness materials; --specular rgb only): three targets,
 // C, A and B (light_prepass_accum.frag); a metallic-roughness fragment finishes pbr_brdf with its own
-// base colour and metallic (after their maps): (1 - F0)^2 (1 - metallic) base C + F0 A + B.
+// base colour and metallic (after their maps): (1 - F0)^2 (1 - metallic) base C + F0 A + B, and adds
+// its emissive (chapter 18) once, beside the ambient (emissive exists only on such materials).
 #include "shading.glsl"
 #ifdef LIGHT_PREPASS_PBR
 #include "material_maps.glsl"
@@ -63,7 +64,7 @@ void main()
     }
     vec3 c = u_view == VIEW_DIFFUSE_LIGHT    ? d.rgb
              : u_view == VIEW_SPECULAR_LIGHT ? s + b
-                                             : shade_ambient(albedo * occlusion) + lit;
+                                             : shade_ambient(albedo * occlusion) + material_emissive() + lit;
 #else
     vec3 c = u_view == VIEW_DIFFUSE_LIGHT    ? d.rgb
              : u_view == VIEW_SPECULAR_LIGHT ? s

@@ -53,6 +53,7 @@ void main()
     vec3 c = shade_light(L, C, s.position, n, v, s.albedo, s.specular, s.shininess);
 #ifdef OVERWRITE
     c += shade_ambient(s.albedo * s.occlusion);
+    c += s.emissive;
 #endif
     if (u_view == SHADER_VIEW_RING && v_volume_radius - d < ring_width)
         c += L.radiance / max(max(L.radiance.r, L.radiance.g), max(L.radiance.b, 1e-6));

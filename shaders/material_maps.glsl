@@ -5,7 +5,7 @@
 #ifndef MATERIAL_MAPS_GLSL
 #define MATERIAL_MAPS_GLSL
 
-uniform sampler2DArray u_maps_srgb;   // base colour, emissive: GL_SRGB8_ALPHA8, sampled as linear values
+uniform sampler2DArray u_maps_srgb;   // base colour, emissive (material_emissive): GL_SRGB8_ALPHA8, sampled as linear values
 uniform sampler2DArray u_maps_linear; // metal-rough, normal, occlusion: GL_RGBA8, sampled as stored
 
 // MATERIAL_MAPS_GRAD is defined by chapter 16's visibility_shade.frag above its #include, and by no
@@ -61,12 +61,29 @@ void material_apply_maps_at(vec2 uv, vec4 tangent, vec4 maps, inout vec3 albedo,
         occlusion = MAP_SAMPLE(u_maps_linear, vec3(uv, maps.w)).r;
 }
 
+// The light the surface gives off itself, linear radiance: the emissive factor times the emissive
+// map's texel (colour data: sRGB, read back as linear) where there is a map, as glTF 2.0 defines it.
+// emissive is the object's texel SHADER_OBJECT_TEXEL_EMISSIVE: rgb, and the map's layer (-1 none);
+// a Blinn-Phong material's is 0 (common/gl/gpu_scene.c). Added once per pixel, where the ambient is.
+vec3 material_emissive_at(vec2 uv, vec4 emissive)
+{
+    vec3 e = emissive.rgb;
+    if (emissive.w >= 0.0 && e != vec3(0.0))
+        e *= MAP_SAMPLE(u_maps_srgb, vec3(uv, emissive.w)).rgb;
+    return e;
+}
+
 #ifndef MATERIAL_MAPS_GRAD
 // The surface the rasterizer interpolated (forward.vert's varyings).
 void material_apply_maps(inout vec3 albedo, inout float specular, inout float shininess, inout vec3 n,
                          out float occlusion)
 {
     material_apply_maps_at(v_uv, v_tangent, v_maps, albedo, specular, shininess, n, occlusion);
+}
+
+vec3 material_emissive()
+{
+    return material_emissive_at(v_uv, v_emissive);
 }
 #endif
 

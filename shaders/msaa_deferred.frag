@@ -49,10 +49,11 @@ bool is_edge(ivec2 p)
 {
     vec4 albedo = texelFetch(u_gbuffer_albedo, p, 0);
     vec4 normal = texelFetch(u_gbuffer_normal, p, 0);
+    vec3 emissive = gbuffer_emissive(p, 0);
     bool background = gbuffer_is_background(sample_depth(p, 0));
     for (int s = 1; s < MSAA_SAMPLES; s++)
         if (texelFetch(u_gbuffer_albedo, p, s) != albedo || texelFetch(u_gbuffer_normal, p, s) != normal ||
-            gbuffer_is_background(sample_depth(p, s)) != background)
+            gbuffer_emissive(p, s) != emissive || gbuffer_is_background(sample_depth(p, s)) != background)
             return true;
     if (background)
         return false;
@@ -85,7 +86,8 @@ vec3 shade_surface(surface s)
         return vec3(0.0);
     ivec2 range = cluster_range(cluster_index(gl_FragCoord.xy, cluster_view_depth(s.position)));
     vec3 v = safe_normalize(u_eye - s.position, s.normal);
-    return cluster_shade(range, s.position, s.normal, v, s.albedo, s.specular, s.shininess, s.occlusion);
+    return cluster_shade(range, s.position, s.normal, v, s.albedo, s.specular, s.shininess, s.occlusion) +
+           s.emissive;
 }
 
 #ifdef MSAA_EDGES

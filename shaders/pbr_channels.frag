@@ -2,7 +2,7 @@
 // pbr_channels.frag - chapter 18's G-buffer channel views: one channel of what the geometry pass
 // stored for the lighting pass, after the material's images were applied (shaders/material_maps.glsl).
 // Colour is display-encoded like a lit picture; the other channels are numbers, shown as grey levels.
-// A Blinn-Phong surface has no metallic, roughness or occlusion channel: it shows dark blue there.
+// A Blinn-Phong surface has no metallic, roughness, occlusion or emissive channel: it shows dark blue there.
 #include "shading.glsl"
 #include "gbuffer_read.glsl"
 
@@ -15,6 +15,7 @@ uniform vec2 u_near_far;
 #define PBR_CHANNEL_NORMAL 4
 #define PBR_CHANNEL_OCCLUSION 5
 #define PBR_CHANNEL_DEPTH 6
+#define PBR_CHANNEL_EMISSIVE 7
 
 out vec4 o_color;
 
@@ -43,5 +44,7 @@ void main()
         c = pbr ? vec3(s.occlusion) : NOT_PBR;
     else if (u_channel == PBR_CHANNEL_DEPTH) // view distance, near black, far white
         c = vec3((distance(s.position, u_eye) - u_near_far.x) / (u_near_far.y - u_near_far.x));
+    else if (u_channel == PBR_CHANNEL_EMISSIVE) // RT2, display-encoded; black where the scene has none
+        c = pbr ? display_encode(s.emissive) : NOT_PBR;
     o_color = vec4(c, 1.0);
 }

@@ -46,6 +46,7 @@ void main()
     vec3 n = s.normal;
     vec3 v = safe_normalize(u_eye - s.position, n);
     vec3 c = shade_ambient(s.albedo * s.occlusion);
+    c += s.emissive; // once per pixel, beside the ambient (0 but for an emissive material)
     for (int k = 0; k < count; k++) {
         int i = every_light ? k : texelFetch(u_tile_lights, range.x + k).r;
         c += shade_light(light_fetch(i), light_fetch_cone(i), s.position, n, v, s.albedo, s.specular, s.shininess);

@@ -130,9 +130,12 @@ vec3 shade_id(uint id, bool inside, out ivec2 range, out float depth)
     // derivatives as the rasterizer takes them: across the 2 x 2 quad the pixel lies in, from its first
     // pixel to the next right and up, each where that pixel's ray meets this triangle's plane
     // (unclamped: a neighbour on another triangle is extrapolated, as the rasterizer's helper pixels are).
+    // The emissive (rgb, its map's layer) is added once, beside the ambient, as forward.frag adds it.
     vec4 maps = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MAPS);
+    vec4 emissive_texel = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_EMISSIVE);
+    vec3 emissive = emissive_texel.rgb;
     float occlusion = 1.0;
-    if (material_is_pbr(shininess) && any(greaterThanEqual(maps, vec4(0.0)))) {
+    if (material_is_pbr(shininess) && (any(greaterThanEqual(maps, vec4(0.0))) || emissive_texel.w >= 0.0)) {
         mat3x2 uvs = mat3x2(vertex_uv(f.x), vertex_uv(f.y), vertex_uv(f.z));
         vec2 quad = floor(gl_FragCoord.xy * 0.5) * 2.0 + 0.5;
         vec3 wc = ray_barycentrics(u_eye, pixel_ray(quad), a, b, c, false);
@@ -143,6 +146,7 @@ vec3 shade_id(uint id, bool inside, out ivec2 range, out float depth)
         vec4 t0 = vertex_tangent(f.x), t1 = vertex_tangent(f.y), t2 = vertex_tangent(f.z);
         vec4 tangent = vec4(mat3(model) * (w.x * t0.xyz + w.y * t1.xyz + w.z * t2.xyz), t0.w);
         material_apply_maps_at(uvs * w, tangent, maps, material.rgb, material.a, shininess, normal, occlusion);
+        emissive = material_emissive_at(uvs * w, emissive_texel);
     }
 
     depth = cluster_view_depth(p);
@@ -150,7 +154,7 @@ vec3 shade_id(uint id, bool inside, out ivec2 range, out float depth)
     if (u_view_mode != SHADER_VIEW_LIT)
         return vec3(0.0);
     vec3 view = safe_normalize(u_eye - p, normal);
-    return cluster_shade(range, p, normal, view, material.rgb, material.a, shininess, occlusion);
+    return cluster_shade(range, p, normal, view, material.rgb, material.a, shininess, occlusion) + emissive;
 }
 
 #ifdef VIS_SAMPLES

@@ -1,5 +1,5 @@
 #version 330 core
-// volume_ambient.frag - the first thing in the light accumulation buffer: ambient light once per
+// volume_ambient.frag - the first thing in the light accumulation buffer: ambient (and emissive) light once per
 // covered pixel (the background is discarded and stays black), in linear radiance; with OVERWRITE
 // (chapters 04-05, which draw straight into the 8-bit target) display-encoded.
 #include "shading.glsl"
@@ -13,6 +13,7 @@ void main()
     if (s.background)
         discard;
     vec3 c = shade_ambient(s.albedo * s.occlusion);
+    c += s.emissive; // emissive: once per pixel, like the ambient (0 but for an emissive material)
 #ifdef OVERWRITE
     c = display_encode(c);
 #endif

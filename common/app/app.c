@@ -362,6 +362,8 @@ static int app_setup(app *a, const app_desc *desc)
     const gbuffer_layout *layout = gbuffer_layout_for_scene(asked, &a->scene);
     if (!layout || !gbuffer_set_default_layout(layout))
         return EXIT_CODE_USAGE;
+    /* A scene with emissive materials: every G-buffer gets RT2 for it (common/render/gbuffer.h). */
+    gbuffer_set_default_emissive(gbuffer_scene_emits(&a->scene));
     if (!app_target_make(a) || (desc->init && !desc->init(a)))
         return a->input_error ? EXIT_CODE_USAGE : EXIT_CODE_RUNTIME;
     if (a->gs.transparent_count > 0 && !desc->draws_glass && !app_renderer_is_forward(a))

@@ -23,6 +23,7 @@ struct app_embed {
     bool have_init;
     bool no_linear; /* a frame with linear output was asked for and not drawn: do not ask again */
     const gbuffer_layout *saved_layout; /* the default layout before a metallic-roughness scene changed it */
+    bool saved_emissive;                /* whether the default G-buffer had RT2 (emissive) before */
 };
 
 /* The chapters open now: each keeps its passes in file-static state. */
@@ -87,6 +88,7 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
         return false;
     }
     e->desc = desc;
+    e->saved_emissive = gbuffer_default_emissive();
     e->cli = app_cli_of(desc, e->renderers_plus);
     app *a = &e->a;
     bool ok = parse_args(e, args, e->argv, &e->opt);
@@ -101,6 +103,8 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
         const gbuffer_layout *asked = e->opt.gbuffer ? gbuffer_layout_find(e->opt.gbuffer) : NULL;
         const gbuffer_layout *layout = gbuffer_layout_for_scene(asked, gs->src);
         ok = layout != NULL;
+        /* An emissive scene's G-buffers get RT2; restored on close, as the layout is. */
+        gbuffer_set_default_emissive(gbuffer_scene_emits(gs->src));
         if (ok && layout != gbuffer_default_layout()) {
             e->saved_layout = gbuffer_default_layout();
             ok = gbuffer_set_default_layout(layout);
@@ -224,6 +228,7 @@ void app_embed_close(app_embed *e)
     free_args(e->argv);
     if (e->saved_layout)
         gbuffer_set_default_layout(e->saved_layout);
+    gbuffer_set_default_emissive(e->saved_emissive);
     mark_open(e->desc, false);
     free(e);
 }

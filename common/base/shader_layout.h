@@ -57,6 +57,7 @@
     X(UNIT_LIGHT_LIST, 1)                                                                                  \
     X(UNIT_OBJECTS, 2)                                                                                     \
     X(UNIT_GBUFFER, 3) /* three units: albedo, normal, depth */                                           \
+    X(UNIT_GBUFFER_EMISSIVE, 17) /* RT2, where the scene has emissive materials (gbuffer.h): past the maps */ \
     X(UNIT_LIGHT_INDEX, 6)                                                                                 \
     X(UNIT_IMAGE, 0)   /* a full-screen pass's one input texture */                                    \
     X(UNIT_SHADOW_ATLAS, 8)  /* chapter 14: the depth atlas (a comparison sampler) */                       \

@@ -49,7 +49,7 @@ static const key_binding table[] = {
     {'K', "K", "14", KEY_ACTION_CHAPTER, "shadows on / off (off: every light unshadowed, chapter 11's picture)"},
     {'B', "B", "15", KEY_ACTION_CHAPTER, "light buffer's specular: rgb (two targets, forward's picture) or mono (one channel)"},
     {'O', "O", "17", KEY_ACTION_CHAPTER, "ambient occlusion on / off (off: chapter 11's picture)"},
-    {'1', "1-7", "18", KEY_ACTION_CHAPTER, "view: lit, albedo, metallic, roughness, normal, occlusion, depth (as --view)"},
+    {'1', "1-8", "18", KEY_ACTION_CHAPTER, "view: lit, albedo, metallic, roughness, normal, occlusion, depth, emissive (as --view)"},
     {'-', "-", "18", KEY_ACTION_CHAPTER, "halve the exposure (chapter 18 takes - and + from the generated lights)"},
     {'=', "+", "18", KEY_ACTION_CHAPTER, "double the exposure"},
     {'T', "T", "18", KEY_ACTION_CHAPTER, "halve the ambient light"},
@@ -69,13 +69,13 @@ static bool applies(const key_binding *b, const char *program)
     return !b->chapters || (program && strncmp(program, b->chapters, strlen(b->chapters)) == 0);
 }
 
-/* A row that stands for a group of keys ("1-7", "IJKL") also matches its others. */
+/* A row that stands for a group of keys ("1-8", "IJKL") also matches its others. */
 static bool matches(const key_binding *b, int code)
 {
     if (b->code == code)
         return true;
-    if (strcmp(b->label, "1-7") == 0)
-        return code >= '1' && code <= '7';
+    if (strcmp(b->label, "1-8") == 0)
+        return code >= '1' && code <= '8';
     return strcmp(b->label, "IJKL") == 0 && (code == 'J' || code == 'K' || code == 'L');
 }
 

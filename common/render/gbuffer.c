@@ -32,6 +32,7 @@ const gbuffer_layout gbuffer_layouts[GBUFFER_LAYOUT_COUNT] = {
 };
 
 static const gbuffer_layout *default_layout = &gbuffer_layouts[GBUFFER_LAYOUT_DEFAULT];
+static bool default_emissive;
 
 /* ---- layouts ----------------------------------------------------------------------------------- */
 
@@ -74,13 +75,40 @@ int gbuffer_layout_bytes(const gbuffer_layout *layout, bool stencil)
             format_bits(gbuffer_layout_depth_format(layout, stencil))) / 8;
 }
 
-int gbuffer_bytes_per_pixel(void) { return gbuffer_layout_bytes(default_layout, false); }
+int gbuffer_bytes_per_pixel(void)
+{
+    return gbuffer_layout_bytes(default_layout, false) + (default_emissive ? format_bits(GBUFFER_EMISSIVE_FORMAT) / 8 : 0);
+}
+
+int gbuffer_pixel_bytes(const gbuffer *g)
+{
+    return gbuffer_layout_bytes(g->desc.layout, g->desc.stencil) +
+           (g->desc.emissive ? format_bits(GBUFFER_EMISSIVE_FORMAT) / 8 : 0);
+}
 
 double gbuffer_memory_bytes(const gbuffer *g)
 {
     const int samples = g->desc.samples > 1 ? g->desc.samples : 1;
-    return (double)gbuffer_layout_bytes(g->desc.layout, g->desc.stencil) * samples * g->fbo.width * g->fbo.height;
+    return (double)gbuffer_pixel_bytes(g) * samples * g->fbo.width * g->fbo.height;
 }
+
+/* ---- emissive (RT2) -------------------------------------------------------------------------- */
+
+/* Only a metallic-roughness material emits (gpu_scene.c writes 0 for Blinn-Phong ones). */
+bool gbuffer_scene_emits(const scene *s)
+{
+    for (int i = 0; i < s->material_count; i++) {
+        const scene_material *m = &s->materials[i];
+        if (m->pbr && (m->emissive[0] > 0.0f || m->emissive[1] > 0.0f || m->emissive[2] > 0.0f ||
+                       m->maps[SCENE_MAP_EMISSIVE] >= 0))
+            return true;
+    }
+    return false;
+}
+
+void gbuffer_set_default_emissive(bool on) { default_emissive = on; }
+
+bool gbuffer_default_emissive(void) { return default_emissive; }
 
 static bool is_reversed(const gbuffer_layout *layout) { return layout->depth == GBUFFER_DEPTH_D32F_REVERSED; }
 
@@ -227,8 +255,8 @@ static bool make_targets(gbuffer *g, int width, int height)
     const gbuffer_layout *l = g->desc.layout;
     const GLenum depth_format = gbuffer_layout_depth_format(l, g->desc.stencil);
     const fbo_desc desc = {
-        .color_formats = {l->albedo_format, l->normal_format},
-        .color_count = 2,
+        .color_formats = {l->albedo_format, l->normal_format, GBUFFER_EMISSIVE_FORMAT},
+        .color_count = g->desc.emissive ? 3 : 2,
         .depth_format = depth_format,
         .name = "gbuffer",
         .samples = g->desc.samples,
@@ -257,11 +285,13 @@ bool gbuffer_create_pass(gbuffer *g, const gbuffer_desc *desc)
         g->desc = *desc;
     if (!g->desc.layout)
         g->desc.layout = default_layout;
+    g->desc.emissive = g->desc.emissive || default_emissive;
     if (!gbuffer_layout_available(g->desc.layout))
         return false;
     /* forward.vert: the same vertex path as the forward renderer, so both rasterise identically. */
-    char defines[64];
-    snprintf(defines, sizeof defines, "GBUFFER_NORMAL %d", g->desc.layout->normal_encoding);
+    char defines[96];
+    snprintf(defines, sizeof defines, "GBUFFER_NORMAL %d%s", g->desc.layout->normal_encoding,
+             g->desc.emissive ? "\nGBUFFER_EMISSIVE 1" : "");
     g->program = gl_program_load("forward.vert", "gbuffer.frag", defines);
     return g->program != 0;
 }
@@ -373,6 +403,12 @@ void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program
     }
     glUniformMatrix4fv(glGetUniformLocation(program, "u_inv_view_proj"), 1, GL_FALSE,
                        reversed ? (const float *)inv_reversed : (const float *)gs->view.inv_view_proj);
+    /* RT2 on its own unit, bound or not: a sampler left on unit 0 would meet the lights' buffer there. */
+    glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_GBUFFER_EMISSIVE);
+    glBindTexture(target, g->desc.emissive ? g->fbo.color[2] : 0);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(glGetUniformLocation(program, "u_gbuffer_emissive"), SHADER_UNIT_GBUFFER_EMISSIVE);
+    glUniform1i(glGetUniformLocation(program, "u_gbuffer_has_emissive"), g->desc.emissive);
     glUniform1i(glGetUniformLocation(program, "u_gbuffer_normal_encoding"), g->desc.layout->normal_encoding);
     glUniform1i(glGetUniformLocation(program, "u_gbuffer_reversed_z"), reversed);
     glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);

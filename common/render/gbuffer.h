@@ -28,9 +28,16 @@
  *                                        (u_gbuffer_normal_encoding, u_gbuffer_reversed_z),
  *                                        u_inv_view_proj and u_eye (with a stencil: the depth's copy)
  *   gbuffer_bytes_per_pixel()            the default layout's size without stencil (a naive layout
- *                                        is GBUFFER_NAIVE_BYTES)
- *   gbuffer_memory_bytes(g)              g's targets in bytes: layout bytes x samples x width x height
- *                                        (without the stencil's depth copy)
+ *                                        is GBUFFER_NAIVE_BYTES), plus RT2's where the default
+ *                                        G-buffer has one (gbuffer_set_default_emissive)
+ *   gbuffer_pixel_bytes(g)               g's bytes per pixel and sample: its layout's, plus RT2's
+ *   gbuffer_memory_bytes(g)              g's targets in bytes: gbuffer_pixel_bytes x samples x width x
+ *                                        height (without the stencil's depth copy)
+ *   gbuffer_scene_emits(s)               whether a material of s gives off light (a non-zero emissive
+ *                                        or an emissive map, on a metallic-roughness material)
+ *   gbuffer_set_default_emissive(on)     whether G-buffers made from now on without desc.emissive have
+ *                                        RT2 (the runner's: on for a scene that emits)
+ *   gbuffer_default_emissive()
  *
  *   gbuffer_layout_find(name)            the layout called name (--gbuffer), NULL when none is
  *   gbuffer_layout_name(layout)          its name (gbuffer_layout_names[])
@@ -90,6 +97,12 @@
  *   linear-albedo  RGBA8          RGBA8 PACKED    D32F           12 (13)
  *   oct8           SRGB8_ALPHA8   RGBA8 BYTES     D32F           12 (13)
  *   oct16          SRGB8_ALPHA8   RGBA16 SHORTS   D32F           16 (17)
+ *   RT2  emissive (chapter 18): GL_R11F_G11F_B10F, 4 bytes, the light the surface gives off itself
+ *        (linear radiance, factor times map), added once per pixel where the ambient is; made only
+ *        for a scene that has it (desc.emissive, or gbuffer_set_default_emissive), so every other
+ *        scene keeps two targets and its bytes. Its reader, gbuffer_read.glsl, reads it where
+ *        u_gbuffer_has_emissive says it is there; the geometry pass writes it when built with
+ *        GBUFFER_EMISSIVE. docs/18_pbr_materials.md has its precision, measured.
  * The default keeps a float depth: with D24S8 chapters 07 and 08 leave the course's 1/255 bound
  * against forward on the city (docs/02_mrt_gbuffer.md). shaders/gbuffer_read.glsl decodes a pixel
  * of any layout (uniforms from gbuffer_bind_textures): gbuffer_read(ivec2 pixel) -> surface.
@@ -144,10 +157,13 @@ typedef struct gbuffer_desc {
     bool stencil; /* a depth-stencil target (D24S8, or D32F_S8 for a float depth) */
     const gbuffer_layout *layout; /* NULL: gbuffer_default_layout() */
     int samples;  /* > 1: multisampled targets (chapter 13); 0, 1: plain textures */
+    bool emissive; /* RT2, emissive (also made when gbuffer_default_emissive() is on) */
 } gbuffer_desc;
 
+#define GBUFFER_EMISSIVE_FORMAT GL_RGBA16F
+
 typedef struct gbuffer {
-    fbo fbo;        /* color[0] albedo, color[1] normal/material, depth (and stencil) */
+    fbo fbo;        /* color[0] albedo, color[1] normal/material, [color[2] emissive], depth (and stencil) */
     GLuint program; /* geometry pass */
     gbuffer_desc desc; /* desc.layout is never NULL once created */
     fbo depth_copy; /* with desc.stencil: the depth, copied after the geometry pass, for the shaders */
@@ -163,7 +179,11 @@ void gbuffer_destroy(gbuffer *g);
 bool gbuffer_render(gbuffer *g, const gpu_scene *gs);
 void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program, int first_unit);
 int gbuffer_bytes_per_pixel(void);
+int gbuffer_pixel_bytes(const gbuffer *g);
 double gbuffer_memory_bytes(const gbuffer *g);
+bool gbuffer_scene_emits(const scene *s);
+void gbuffer_set_default_emissive(bool on);
+bool gbuffer_default_emissive(void);
 
 const gbuffer_layout *gbuffer_layout_find(const char *name);
 const char *gbuffer_layout_name(const gbuffer_layout *layout);

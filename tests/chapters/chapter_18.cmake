@@ -54,6 +54,55 @@ function(chapter_18_tests)
     set_tests_properties(agree.18_hard_${name} PROPERTIES LABELS "golden;hard")
   endforeach()
 
+  # Emissive (docs/18_pbr_materials.md): a lamp that only emits, an emissive-mapped box and a plastic ball
+  # that emits nothing (tests/scenes/emissive_pbr.scene), drawn by every renderer with the emissive added
+  # once per pixel beside the ambient; the deferred ones read it from the G-buffer's RT2. Bound 1/255 on
+  # 99.99 %, measured at 320 x 240: 0 pixels beyond it for 03, 10, 11, 12, 18 and 13 --samples 1, 1 for
+  # 07 and 19 (as on the same scene without emissive). An R11F_G11F_B10F RT2 left 144 pixels (0.19 %,
+  # max 2/255) beyond it: RT2 is RGBA16F.
+  set(E --scene ${CMAKE_SOURCE_DIR}/tests/scenes/emissive_pbr.scene)
+  course_agreement_test(18_emissive_vs_forward 1 0.0001 ${C} ${E} VS 00_forward ${E})
+  course_agreement_test(18_emissive_forward_plus 1 0.0001 ${C} --renderer forward-plus ${E} VS 00_forward ${E})
+  course_agreement_test(18_emissive_02_final 1 0.0001 02_mrt_gbuffer --view final ${E} VS 00_forward ${E})
+  foreach(other 03_fullscreen_phong 07_face_culling 10_tiled_deferred 11_clustered 12_transparency)
+    if(TARGET ${other})
+      course_agreement_test(18_emissive_${other} 1 0.0001 ${other} ${E} VS 00_forward ${E})
+    endif()
+  endforeach()
+  if(TARGET 13_msaa)
+    # MSAA against MSAA forward: chapter 13's own bound (0.1 %; 6 pixels here, the same edges without
+    # emissive); one sample against chapter 00.
+    course_agreement_test(18_emissive_13_msaa 1 0.001 13_msaa ${E} VS 13_msaa --renderer forward ${E})
+    course_agreement_test(18_emissive_13_samples1 1 0.0001 13_msaa --samples 1 ${E} VS 00_forward ${E})
+  endif()
+  if(TARGET 16_visibility_buffer)
+    # Chapter 16's own PBR bound (0.025 %): 8 pixels of the tiles' textureGrad, the same without emissive.
+    course_agreement_test(18_emissive_16 1 0.00025 16_visibility_buffer --anisotropy 1 ${E} VS 16_visibility_buffer
+      --anisotropy 1 --renderer forward ${E})
+  endif()
+  if(TARGET 19_image_based_light)
+    # The probes are captured by chapter 00's forward: the lamp and the sign light them.
+    course_agreement_test(18_emissive_19 1 0.0001 19_image_based_light ${E} VS 19_image_based_light --renderer forward ${E})
+  endif()
+  # Chapter 15 refuses metallic-roughness scenes (below): its combine pass adds the emissive, untested here.
+  # The emissive shows: the same scene with every emissive factor 0 must differ (max 243/255, 5.6 %).
+  course_agreement_test(18_emissive_differs 1 0.0001 00_forward ${E} VS 00_forward
+    --scene ${CMAKE_SOURCE_DIR}/tests/scenes/emissive_pbr_off.scene)
+  set_tests_properties(agree.18_emissive_differs PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
+  # The emissive view (key 8), a checked picture.
+  course_golden_test(18_pbr_emissive ${C} 1 0.0001 ${E} --view emissive)
+  # RT2 is counted where it is made: 16 + 8 bytes a pixel for this scene, 16 for the teapots.
+  if(TARGET 02_mrt_gbuffer)
+    add_test(NAME chapters.18_emissive_bytes COMMAND 02_mrt_gbuffer --headless --frames 1 --size 320x240 ${E}
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(chapters.18_emissive_bytes PROPERTIES LABELS golden
+      PASS_REGULAR_EXPRESSION "G-buffer: 24 bytes/pixel")
+    add_test(NAME chapters.18_no_emissive_bytes COMMAND 02_mrt_gbuffer --headless --frames 1 --size 320x240 ${PBR}
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(chapters.18_no_emissive_bytes PROPERTIES LABELS golden
+      PASS_REGULAR_EXPRESSION "G-buffer: 16 bytes/pixel")
+  endif()
+
   # The keys, driven by a --script: a number key is its view, + and - the exposure, Y the ambient, L and J
   # move every light and back.
   add_test(NAME window.18_pbr_keys
@@ -64,7 +113,7 @@ function(chapter_18_tests)
   # --help (and F1) lists the chapter's keys, and not the shared - and + it takes over.
   add_test(NAME chapters.18_help_keys COMMAND ${C} --help WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(chapters.18_help_keys PROPERTIES LABELS golden
-    PASS_REGULAR_EXPRESSION "1-7 +view: lit, albedo.*\n  - +halve the exposure.*IJKL +move every light"
+    PASS_REGULAR_EXPRESSION "1-8 +view: lit, albedo.*\n  - +halve the exposure.*IJKL +move every light"
     FAIL_REGULAR_EXPRESSION "halve the generated lights")
 
   # A fixed-point G-buffer cannot hold these materials: refused, exit 2.
