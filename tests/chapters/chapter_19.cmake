@@ -22,6 +22,8 @@ function(chapter_19_tests)
   endforeach()
   course_golden_test(19_image_based_light_teapots_probe ${C} 1 0.0001 --view probe --scene ${A}/teapots_probes.scene)
   course_golden_test(19_image_based_light_size32 ${C} 1 0.0001 --view specular --probe-size 32)
+  # With chapter 17's occlusion under the probes' light, on the PBR scene (docs/19's picture).
+  course_golden_test(19_image_based_light_pbr_ssao ${C} 1 0.0001 --ssao on --scene ${S}/ibl_pbr.scene)
 
   # Forward gets it too: deferred, forward and Forward+ agree on the lit picture.
   foreach(case "default|" "teapots_cutoff0|--scene@${A}/teapots_probes.scene@--cutoff@0" "800|--size@800x600"
