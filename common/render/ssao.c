@@ -51,7 +51,8 @@ static GLuint make_noise(rng *r)
     GLuint t = 0;
     glGenTextures(1, &t);
     glBindTexture(GL_TEXTURE_2D, t);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, SHADER_AO_NOISE_SIZE, SHADER_AO_NOISE_SIZE, 0, GL_RG, GL_FLOAT, turns);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, SHADER_AO_NOISE_SIZE, SHADER_AO_NOISE_SIZE, 0, GL_RG, GL_FLOAT,
+                 turns);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -80,7 +81,8 @@ bool ssao_resize(ssao *s, int width, int height)
     if (s->ao.id && s->ao.width == width && s->ao.height == height)
         return true;
     fbo_destroy(&s->normals), fbo_destroy(&s->ao), fbo_destroy(&s->ao_blurred);
-    const fbo_desc normals = {.color_formats = {s->layout->normal_format}, .color_count = 1,
+    const fbo_desc normals = {.color_formats = {s->layout->normal_format},
+                              .color_count = 1,
                               .depth_format = gbuffer_layout_depth_format(s->layout, false),
                               .name = "depth-normal pre-pass"};
     const fbo_desc ao = {.color_formats = {GL_RGBA16F}, .color_count = 1, .name = "ambient occlusion"};
@@ -122,10 +124,12 @@ static void bind_prepass(const ssao *s, GLuint p, const gpu_scene *gs)
         glUniform1i(glGetUniformLocation(p, names[i]), SHADER_UNIT_GBUFFER + 1 + i);
     }
     glActiveTexture(GL_TEXTURE0);
-    glUniformMatrix4fv(glGetUniformLocation(p, "u_inv_view_proj"), 1, GL_FALSE, (const float *)gs->view.inv_view_proj);
+    glUniformMatrix4fv(glGetUniformLocation(p, "u_inv_view_proj"), 1, GL_FALSE,
+                       (const float *)gs->view.inv_view_proj);
     glUniform1i(glGetUniformLocation(p, "u_gbuffer_normal_encoding"), s->layout->normal_encoding);
     glUniform1i(glGetUniformLocation(p, "u_gbuffer_reversed_z"), 0);
-    glUniform2f(glGetUniformLocation(p, "u_viewport_size"), (float)s->normals.width, (float)s->normals.height);
+    glUniform2f(glGetUniformLocation(p, "u_viewport_size"), (float)s->normals.width,
+                (float)s->normals.height);
 }
 
 /* The surface the passes read: the G-buffer's, or forward's pre-pass (g NULL). */
@@ -136,7 +140,8 @@ static void bind_surface(const ssao *s, GLuint p, const gbuffer *g, const gpu_sc
         gbuffer_bind_textures(g, gs, p, SHADER_UNIT_GBUFFER);
     else
         bind_prepass(s, p, gs);
-    glUniformMatrix4fv(glGetUniformLocation(p, "u_view_proj"), 1, GL_FALSE, (const float *)gs->view.view_proj);
+    glUniformMatrix4fv(glGetUniformLocation(p, "u_view_proj"), 1, GL_FALSE,
+                       (const float *)gs->view.view_proj);
     glUniform1f(glGetUniformLocation(p, "u_radius"), s->desc.radius);
 }
 
@@ -168,7 +173,10 @@ bool ssao_draw(ssao *s, const gbuffer *g, const gpu_scene *gs)
     return gl_check("ssao");
 }
 
-GLuint ssao_occlusion(const ssao *s) { return s->desc.blur > 0 ? s->ao_blurred.color[0] : s->ao.color[0]; }
+GLuint ssao_occlusion(const ssao *s)
+{
+    return s->desc.blur > 0 ? s->ao_blurred.color[0] : s->ao.color[0];
+}
 
 void ssao_bind(GLuint program, const void *ssao_state)
 {
