@@ -16,7 +16,9 @@
  *   per frame: the IBL_MAX_PICKED most important probes (radius over distance to the eye), blended
  *      per pixel in the shading pass, weight (1 - (d / R)^2)^2; outside every radius, the constant
  * Views: lit; probe, which probe lights each pixel; irradiance; specular (ibl_view.frag, from the
- * G-buffer). No SSAO here: chapter 17's occlusion would scale this term the same way (the page says).
+ * G-buffer). With --ssao on (key O) chapter 17's occlusion (common/render/ssao.c: its two passes on
+ * the G-buffer, or on forward's depth-normal pre-pass) scales the whole ambient term, the probes'
+ * diffuse and specular light as the constant's; the lights' direct terms never (the page says why).
  * Read docs/19_image_based_light.md alongside.
  */
 #include "app.h"
@@ -29,6 +31,7 @@
 #include "gl_util.h"
 #include "ibl_probes.h"
 #include "log.h"
+#include "ssao.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -50,6 +53,7 @@ static const cli_desc cli = {
              CLI_POWER_OF_TWO, 16, 512},
             {"ibl-samples", "N", "GGX samples per prefiltered texel, 1 to 1024", NULL, "256", CLI_WHOLE, 1, 1024},
             {"ibl", "ON", "probes on or off (off: chapter 11's picture; key I)", switches, "on"},
+            {"ssao", "ON", "chapter 17's ambient occlusion on the probes' light, on or off (key O)", switches, "off"},
         },
 };
 
@@ -61,9 +65,18 @@ static struct {
     clusters c;
     forward fwd;
     ibl probes;
+    ssao ao; /* chapter 17's occlusion, at its defaults */
     GLuint view_program;
     bool captured;
 } state;
+
+/* The shading programs' extra inputs: the probes, and the occlusion. */
+static void bind_ambient(GLuint program, const void *user)
+{
+    (void)user;
+    ibl_probes_bind(program, &state.probes);
+    ssao_bind(program, &state.ao);
+}
 
 static bool init(app *a)
 {
@@ -73,19 +86,24 @@ static bool init(app *a)
     /* five prefiltered levels (roughness 0, 1/4, ... 1), the last one size / 16 texels */
     const ibl_desc desc = {.size = (int)size, .levels = 5, .samples = (int)samples, .brdf_size = 64,
                            .brdf_samples = 512};
-    const gl_program_extra extra = {.defines = "IMAGE_BASED_LIGHT 1", .bind = ibl_probes_bind, .user = &state.probes};
+    const ssao_desc occlusion = {.radius = 0.5f, .samples = 16, .blur = 2};
+    const gl_program_extra extra = {.defines = "IMAGE_BASED_LIGHT 1\nAMBIENT_OCCLUSION 1", .bind = bind_ambient};
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
     a->pass_state = &fullscreen_pass; /* the overlay shows it */
     state.captured = false;
     state.view_program = gl_program_load("fullscreen.vert", "ibl_view.frag", "IMAGE_BASED_LIGHT 1");
-    bool ok = state.view_program && ibl_probes_create(&state.probes, &desc) &&
+    bool ok = state.view_program && ibl_probes_create(&state.probes, &desc) && ssao_create(&state.ao, &occlusion) &&
               gbuffer_create(&state.g, a->width, a->height) && clusters_create(&state.c, &lists) &&
               forward_create_with(&state.fwd, &extra);
     state.probes.on = strcmp(app_extra(a, "ibl"), "on") == 0;
+    state.ao.on = strcmp(app_extra(a, "ssao"), "on") == 0;
     return ok;
 }
 
-static bool resize(app *a) { return gbuffer_resize(&state.g, a->width, a->height); }
+static bool resize(app *a)
+{
+    return gbuffer_resize(&state.g, a->width, a->height) && ssao_resize(&state.ao, a->width, a->height);
+}
 
 /* At the first frame (the scene's lights placed at its time) and on key U: every probe again. */
 static bool capture(const gpu_scene *gs)
@@ -122,9 +140,13 @@ static bool draw_view(app *a)
     return gl_check("19 ibl view");
 }
 
-/* Forward (chapter 00's, pre-pass and lists) or Forward+ (chapter 11's) into target. */
+/* Forward (chapter 00's, pre-pass and lists) or Forward+ (chapter 11's) into target; with the
+ * occlusion on, after chapter 17's depth-normal pre-pass and its two passes. */
 static bool frame_forward(app *a, GLuint target, bool plus)
 {
+    if (!ssao_resize(&state.ao, a->width, a->height) ||
+        (state.ao.on && (!ssao_draw_prepass(&state.ao, &a->gs) || !ssao_draw(&state.ao, NULL, &a->gs))))
+        return false;
     bool ok = plus ? chapter_11_forward_plus.prepass(&state.c, &a->gs, target) &&
                          chapter_11_forward_plus.shade(&state.c, &a->gs, CLUSTERS_VIEW_LIT)
                    : forward_render(&state.fwd, &a->gs, target, (forward_options){.prepass = true, .light_lists = true});
@@ -132,10 +154,12 @@ static bool frame_forward(app *a, GLuint target, bool plus)
     return ok;
 }
 
-/* Clustered deferred: geometry pass, light assignment, one shading pass (the probes in its ambient). */
+/* Clustered deferred: geometry pass, light assignment, (SSAO, blur,) one shading pass (the probes
+ * in its ambient). */
 static bool frame_deferred(app *a)
 {
-    if (!gbuffer_render(&state.g, &a->gs) || !chapter_11_assign(&state.c, &a->gs))
+    if (!ssao_resize(&state.ao, a->width, a->height) || !gbuffer_render(&state.g, &a->gs) ||
+        !chapter_11_assign(&state.c, &a->gs) || (state.ao.on && !ssao_draw(&state.ao, &state.g, &a->gs)))
         return false;
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
@@ -161,13 +185,19 @@ static bool frame(app *a)
                                           : frame_forward(a, a->target.id, app_renderer_is(a, "forward-plus"));
 }
 
-/* I: the probes on or off (off: chapter 11's constant ambient); U: capture every probe again. */
+/* I: the probes on or off (off: chapter 11's constant ambient); U: capture every probe again;
+ * O: the occlusion on or off. */
 static bool key(app *a, int k)
 {
     (void)a;
     if (k == 'I') {
         state.probes.on = !state.probes.on;
         log_info("image-based light: %s", state.probes.on ? "on" : "off");
+        return true;
+    }
+    if (k == 'O') {
+        state.ao.on = !state.ao.on;
+        log_info("ambient occlusion: %s", state.ao.on ? "on" : "off");
         return true;
     }
     if (k == 'U') {
@@ -194,6 +224,7 @@ static void cleanup(app *a)
     clusters_destroy(&state.c);
     gbuffer_destroy(&state.g);
     ibl_probes_destroy(&state.probes);
+    ssao_destroy(&state.ao);
     gl_program_destroy(&state.view_program);
 }
 

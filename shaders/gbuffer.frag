@@ -52,7 +52,11 @@ void main()
 #elif GBUFFER_NORMAL == SHADER_GBUFFER_NORMAL_PACKED
     o_normal_material = vec4(pack_12_12(octahedral_encode_codes(n, 2047.0)), shininess_store(shininess));
 #else // SHADER_GBUFFER_NORMAL_SHORTS
+    // b: 0 for Blinn-Phong; a metallic-roughness material's occlusion as 0.5 + 0.5 o, with its
+    // roughness in a to the 1/1024 steps pbr_roughness keeps (its metallic is RT0's 8-bit alpha)
     o_normal_material = vec4(octahedral_encode_codes(n, 32767.0) / 65535.0, 0.0, shininess_store(shininess));
+    if (material_is_pbr(shininess))
+        o_normal_material.zw = vec2(0.5 + 0.5 * occlusion, floor(clamp(-1.0 - shininess, 0.0, 1.0) * 1024.0 + 0.5) / 1024.0);
 #endif
 #endif
 }

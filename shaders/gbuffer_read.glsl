@@ -92,6 +92,10 @@ surface gbuffer_decode(vec4 albedo, vec4 nm, float depth, vec3 position)
         s.normal = octahedral_decode_codes(gbuffer_codes(nm.xy, 65535.0), 32767.0);
     s.specular = albedo.a;
     s.shininess = 1.0 + 255.0 * nm.w; // gbuffer.frag's shininess_store
+    if (u_gbuffer_normal_encoding == SHADER_GBUFFER_NORMAL_SHORTS && nm.z > 0.25) { // metallic-roughness
+        s.occlusion = nm.z * 2.0 - 1.0;
+        s.shininess = -1.0 - floor(nm.w * 1024.0 + 0.5) / 1024.0;
+    }
     return s;
 }
 

@@ -109,7 +109,9 @@ vec3 ibl_ambient(vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shin
     ibl_terms t = ibl_gather(p, n, v, roughness);
     vec2 ab = ibl_brdf(n, v, roughness);
     vec3 c = (pbr ? albedo * (1.0 - specular) : albedo) * t.irradiance + t.prefiltered * (f0 * ab.x + ab.y);
-    return min(t.coverage, 1.0) * c + max(1.0 - t.coverage, 0.0) * shade_ambient(albedo);
+    // with AMBIENT_OCCLUSION (chapter 19's --ssao) the occlusion scales the probes' light as it
+    // scales the constant's (shade_ambient)
+    return min(t.coverage, 1.0) * ambient_occlusion() * c + max(1.0 - t.coverage, 0.0) * shade_ambient(albedo);
 }
 
 #endif

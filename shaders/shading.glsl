@@ -239,13 +239,19 @@ uniform sampler2D u_ao;
 uniform bool u_ao_on;
 #endif
 
-vec3 shade_ambient(vec3 albedo)
+// The share of the ambient light that reaches this pixel: the occlusion, or 1.
+float ambient_occlusion()
 {
 #ifdef AMBIENT_OCCLUSION
     if (u_ao_on)
-        return u_ambient * albedo * texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
+        return texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
 #endif
-    return u_ambient * albedo;
+    return 1.0;
+}
+
+vec3 shade_ambient(vec3 albedo)
+{
+    return u_ambient * albedo * ambient_occlusion();
 }
 
 // The ambient term where the surface is known: shade_ambient(), or in a program built with

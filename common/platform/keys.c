@@ -59,6 +59,7 @@ static const key_binding table[] = {
     {KEY_DOWN, "Down", "18", KEY_ACTION_CHAPTER, "move every light together down"},
     {'I', "I", "19", KEY_ACTION_CHAPTER, "image-based light from the probes on / off (off: chapter 11's picture)"},
     {'U', "U", "19", KEY_ACTION_CHAPTER, "capture every probe again (after the lights moved)"},
+    {'O', "O", "19", KEY_ACTION_CHAPTER, "chapter 17's ambient occlusion on / off, on the probes' light too (as --ssao)"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])

@@ -140,11 +140,13 @@ bool gbuffer_set_default_layout(const gbuffer_layout *layout)
 
 const gbuffer_layout *gbuffer_default_layout(void) { return default_layout; }
 
-/* A metallic-roughness material is marked by a negative shininess (shaders/shading.glsl): only a
- * half-float RT1 keeps the sign; the fixed-point ones clamp it to 0, a Blinn-Phong shininess of 1. */
+/* A metallic-roughness material is marked by a negative shininess (shaders/shading.glsl): a
+ * half-float RT1 keeps the sign; 8-bit ones clamp it to 0, a Blinn-Phong shininess of 1; oct16's
+ * RGBA16 marks it in its spare channel (gbuffer.frag). */
 bool gbuffer_layout_holds_pbr(const gbuffer_layout *layout)
 {
-    return layout->normal_encoding == SHADER_GBUFFER_NORMAL_HALF;
+    return layout->normal_encoding == SHADER_GBUFFER_NORMAL_HALF ||
+           layout->normal_encoding == SHADER_GBUFFER_NORMAL_SHORTS;
 }
 
 const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, const scene *s)
@@ -155,7 +157,7 @@ const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, con
     if (!pbr)
         return layout ? layout : default_layout;
     if (!layout)
-        return gbuffer_layout_holds_pbr(default_layout) ? default_layout : &gbuffer_layouts[GBUFFER_LAYOUT_REFERENCE];
+        return gbuffer_layout_holds_pbr(default_layout) ? default_layout : &gbuffer_layouts[GBUFFER_LAYOUT_OCT16];
     if (gbuffer_layout_holds_pbr(layout))
         return layout;
     char holds[128] = "";
@@ -163,7 +165,7 @@ const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, con
         if (gbuffer_layout_holds_pbr(&gbuffer_layouts[i]))
             snprintf(holds + strlen(holds), sizeof holds - strlen(holds), "%s%s", holds[0] ? ", " : "",
                      gbuffer_layout_names[i]);
-    log_error("G-buffer layout %s cannot hold the scene's metallic-roughness materials (its RT1 is fixed-point: "
+    log_error("G-buffer layout %s cannot hold the scene's metallic-roughness materials (its RT1 is 8-bit: "
               "docs/18_pbr_materials.md); layouts that can: %s",
               gbuffer_layout_name(layout), holds);
     return NULL;

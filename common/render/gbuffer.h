@@ -50,10 +50,10 @@
  *                                        --gbuffer); false, logged, when not available
  *   gbuffer_default_layout()
  *   gbuffer_layout_holds_pbr(layout)     whether the layout keeps metallic-roughness materials (a
- *                                        half-float RT1: reference)
+ *                                        half-float RT1: reference; a 16-bit one: oct16)
  *   gbuffer_layout_for_scene(layout, s)  the layout to draw s with: `layout` (NULL: the default), or
  *                                        for a scene with metallic-roughness materials and no layout
- *                                        asked for, reference; NULL, logged, when the one asked for
+ *                                        asked for, oct16; NULL, logged, when the one asked for
  *                                        cannot hold them
  *   gbuffer_layout_fits_pass(layout, pass)
  *                                        false, with one line logged, for a reversed-Z layout and a
@@ -73,6 +73,7 @@
  *   RT1  the octahedral normal (shaders/octahedral.glsl), and the material RT0 has no room for:
  *          SHADER_GBUFFER_NORMAL_HALF    GL_RGBA16F  x, y half floats (best of 4), S, P   8 bytes
  *          SHADER_GBUFFER_NORMAL_SHORTS  GL_RGBA16   x, y 16-bit codes, -, P             8 bytes
+ *                                        (metallic-roughness: x, y, 0.5 + 0.5 occlusion, roughness)
  *          SHADER_GBUFFER_NORMAL_PACKED  GL_RGBA8    x, y 12-bit codes over r, g, b; P   4 bytes
  *          SHADER_GBUFFER_NORMAL_BYTES   GL_RGBA8    x, y 8-bit codes, -, P              4 bytes
  *        an n-bit code q is (q - m) / m, m = 2^(n-1) - 1, so 0 and +-1 are exact, and the encoder
