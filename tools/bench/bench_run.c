@@ -22,7 +22,20 @@ typedef struct run_ctx {
     bench_renderers *br;
     bench_measure *m;
     frame_timer timers[BENCH_RENDERER_MAX]; /* one per renderer: GPU queries are read a frame late */
+    bool chapters_pbr; /* the open chapters were opened on a scene with metallic-roughness materials */
 } run_ctx;
+
+/* A chapter picks its G-buffer layout for the scene it opens on (a metallic-roughness scene needs one
+ * that holds it): when the next scene needs the other kind, the chapters are closed, to reopen on it. */
+static void chapters_follow(run_ctx *x, const scene *s)
+{
+    bool pbr = false;
+    for (int i = 0; i < s->material_count; i++)
+        pbr = pbr || s->materials[i].pbr;
+    if (pbr != x->chapters_pbr)
+        bench_renderers_close_chapters(x->br);
+    x->chapters_pbr = pbr;
+}
 
 /* ---- prediction of slow cases ------------------------------------------------------------------ */
 
@@ -357,9 +370,7 @@ static bool run_scene(run_ctx *x, const char *name, bool light_sweep, bool cutof
     scene own, gen;
     if (!scene_load(path, &own))
         return false;
-    /* A chapter picks its G-buffer layout for the scene it opens on (a metallic-roughness scene needs
-     * one that holds it): each scene opens the chapters afresh. */
-    bench_renderers_close_chapters(x->br);
+    chapters_follow(x, &own);
     if (!scene_load(path, &gen)) {
         scene_destroy(&own);
         return false;
@@ -401,7 +412,7 @@ static bool run_pbr_scene(run_ctx *x, const char *name)
         x->st->case_index++;
         return true;
     }
-    bench_renderers_close_chapters(x->br); /* reopened on this scene: a layout that holds it */
+    chapters_follow(x, &own);
     gpu_scene gs;
     case_desc c = {.sweep = "pbr",
                    .scene_name = label,
@@ -429,7 +440,7 @@ static bool run_sweeps(run_ctx *x);
 /* Every sweep, with one frame timer per renderer for the pass columns. */
 bool bench_run_all(bench_state *st, bench_renderers *br, bench_measure *m)
 {
-    run_ctx x = {st, br, m, {{0}}};
+    run_ctx x = {st, br, m, {{0}}, false};
     for (int r = 0; r < BENCH_RENDERER_MAX; r++)
         if (!frame_timer_create(&x.timers[r]))
             return false;
