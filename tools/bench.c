@@ -17,6 +17,7 @@
  *   bench_renderers  the renderers compared    bench_measure  reference, work, error, read-backs
  *   bench_state      options, machine, rows    bench_error    a picture's error against the exact one
  *   bench_report     bench.csv and bench.md    bench_plots    the gnuplot script and plots
+ *   bench_report_pbr the PBR rows' section (metallic-roughness scenes, their own lights)
  *   bench_gbuffer    the G-buffer layouts: bytes, time and precision (--gbuffer-sweep)
  *   bench_storage    what to store per pixel: bytes counted, passes timed, error (--storage)
  *   bench_ambient    SSAO and image-based light against the lighting pass (--ambient-sweep)
@@ -81,9 +82,10 @@ static void print_plan(const bench_options *o, int cases)
                           : strcmp(o->sweep_name, "course") == 0 ? "3 to 5 minutes"
                                                                  : "under a minute";
     fprintf(stderr,
-            "bench: the %s sweep: %d cases (%d scene(s) x %d light counts, %d cut-offs) x %d renderers%s%s; "
-            "%s on 2 cores with llvmpipe%s\n",
+            "bench: the %s sweep: %d cases (%d scene(s) x %d light counts, %d cut-offs) x %d renderers, "
+            "%d PBR scene(s) x %d renderers%s%s; %s on 2 cores with llvmpipe%s\n",
             o->sweep_name, cases, o->scene_count, o->light_list_count, o->cutoff_count, o->renderer_count,
+            o->pbr_scene_count, o->pbr_renderer_count,
             gbuffer_sweep_runs() ? ", then the G-buffer layouts" : "",
             storage_table_runs() ? ", then the storage table" : "", minutes,
             strcmp(o->sweep_name, "full") == 0 ? "" : " (--full: the pages' sweep)");

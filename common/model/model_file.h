@@ -34,7 +34,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-/* Defaults: fifty times the largest model the course ships (assets/models/teapot.obj, 1.2 MB),
+/* Defaults: forty times the largest model the course ships (assets/models/teapot.obj, 1.6 MB),
  * and small enough that what Assimp makes of them stays within a few GB (docs/scene-format.md). */
 #define MODEL_MAX_BYTES_DEFAULT (64LL << 20)
 #define MODEL_MAX_VERTICES_DEFAULT 4000000L

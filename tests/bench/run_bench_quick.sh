@@ -36,8 +36,13 @@ done
 [ "$fail" -eq 0 ] || exit 1
 
 # The CSV: the stable header, then (3 light counts x R renderers) + (3 cut-offs x (R - 1)) rows, the
-# naive forward renderer being left out of the cut-off sweep (--quick: 1,16,64 lights; 2,5,16/256).
-awk -F, '
+# naive forward renderer being left out of the cut-off sweep (--quick: 1,16,64 lights; 2,5,16/256),
+# then the PBR rows: pbr_teapots and gltf_engine, each with its own lights, by forward, forward-plus
+# and deferred-clustered. gltf_engine imports a sample of Debian's assimp-testmodels: without the
+# package its rows say not_loaded, and only then.
+engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
+have_engine=0; [ -f "$engine" ] && have_engine=1
+awk -F, -v have_engine="$have_engine" '
 NR == 1 {
     want = "sweep,scene,renderer,light_set,lights,active_lights,cutoff_256,width,height,frames,warmup," \
            "median_ms,min_ms,max_ms,fps,status,shaded_pixels,covered_pixels,ideal_pairs,light_evals," \
@@ -51,8 +56,23 @@ NR == 1 {
     rows++
     if (NF != ncol) { printf "FAIL: row %d has %d fields, header %d\n", NR, NF, ncol; bad = 1 }
     if ($1 == "lights") lights_rows++; else if ($1 == "cutoff") cutoff_rows++;
+    else if ($1 == "pbr") { pbr_rows++; pbr_scenes[$2] = 1 }
     else { printf "FAIL: row %d: sweep %s\n", NR, $1; bad = 1 }
-    renderers[$3] = 1
+    if ($1 != "pbr") renderers[$3] = 1
+    if ($1 == "pbr" && $16 == "not_loaded") {
+        if ($2 != "gltf_engine" || have_engine) { printf "FAIL: row %d: %s not loaded\n", NR, $2; bad = 1 }
+        next
+    }
+    # the PBR rows: the scene'"'"'s own lights (80 teapots, 32 engine), a 16-byte layout for the deferred
+    # renderer, and its error against the exact picture that of forward (a G-buffer that cannot hold the
+    # materials would shade them as Blinn-Phong: far more)
+    if ($1 == "pbr") {
+        if ($4 != "scene" || ($2 == "pbr_teapots" && $5 != 80) || ($2 == "gltf_engine" && $5 != 32)) {
+            printf "FAIL: row %d: %s with %s lights %s\n", NR, $2, $4, $5; bad = 1
+        }
+        if ($3 == "deferred-clustered" && $22 != 16) { printf "FAIL: row %d: G-buffer %s bytes\n", NR, $22; bad = 1 }
+        pbr_error[$2 "," $3] = $25
+    }
     # numeric columns 5..15 and 17..29: a finite number or NA
     for (i = 5; i <= 29; i++) {
         if (i == 16) continue
@@ -80,13 +100,22 @@ END {
     if (r < 3) { printf "FAIL: only %d renderers\n", r; bad = 1 }
     if (lights_rows != 3 * r) { printf "FAIL: %d light-sweep rows, want %d\n", lights_rows, 3 * r; bad = 1 }
     if (cutoff_rows != 3 * (r - 1)) { printf "FAIL: %d cut-off rows, want %d\n", cutoff_rows, 3 * (r - 1); bad = 1 }
+    if (pbr_rows != 6 || !("pbr_teapots" in pbr_scenes) || !("gltf_engine" in pbr_scenes)) {
+        printf "FAIL: %d PBR rows, want pbr_teapots and gltf_engine by 3 renderers\n", pbr_rows; bad = 1
+    }
+    for (k in pbr_error) {
+        split(k, sr, ","); f = pbr_error[sr[1] ",forward"]
+        if (sr[2] != "forward" && (pbr_error[k] - f > 0.5 || f - pbr_error[k] > 0.5)) {
+            printf "FAIL: %s: mean 8-bit error %s, forward %s\n", k, pbr_error[k], f; bad = 1
+        }
+    }
     if (!bad) printf "ok: %d rows, %d renderers\n", rows, r
     exit bad
 }' "$out/bench.csv" || exit 1
 
 # The report has its sections.
 for section in "## Targets" "## Crossover" "## Median ms per frame" "## Lighting work" "## Error against" \
-               "## Speed against error"; do
+               "## Speed against error" "## Metallic-roughness scenes"; do
     grep -q "^$section" "$out/bench.md" || { echo "FAIL: bench.md lacks '$section'"; exit 1; }
 done
 # The quick sweep has no target case: the Targets section says so instead of an empty table.
@@ -103,12 +132,13 @@ if [ "$renderers" -lt 9 ] || [ "$pairs" -ne "$renderers" ] || [ "$lines" -ne "$r
     echo "FAIL: the plots' styles (renderer colour-point): $(echo $styles)"; exit 1
 fi
 # The start says what the run will do and where its results go; --cutoffs none drops the cut-off
-# section and its plot; with deferred renderers only there is no crossover to find, and it says so.
-grep -q "^bench: the quick sweep: 6 cases" "$out.stderr" && grep -q "^bench: results will be in $out/" "$out.stderr" ||
+# section and its plot, --pbr-scenes none the PBR rows and their section; with deferred renderers only there is no crossover to find, and it says so.
+grep -q "^bench: the quick sweep: 8 cases" "$out.stderr" && grep -q "^bench: results will be in $out/" "$out.stderr" ||
     { echo "FAIL: the run did not say what it would do: $(head -3 "$out.stderr")"; exit 1; }
-"$bench" --quick --cutoffs none --renderers deferred-volumes,deferred-stencil --out "$out/none" >/dev/null 2>&1 ||
-    { echo "FAIL: --cutoffs none"; exit 1; }
+"$bench" --quick --cutoffs none --pbr-scenes none --renderers deferred-volumes,deferred-stencil --out "$out/none" \
+    >/dev/null 2>&1 || { echo "FAIL: --cutoffs none"; exit 1; }
 if grep -q "^## Speed against error" "$out/none/bench.md" || [ -e "$out/none/speed_vs_error.png" ] ||
+   grep -q "^## Metallic-roughness" "$out/none/bench.md" || grep -q "^pbr," "$out/none/bench.csv" ||
    ! grep -q "^None to find: --renderers holds only deferred" "$out/none/bench.md"; then
     echo "FAIL: --cutoffs none with deferred renderers only: $(grep -A2 '^## Crossover' "$out/none/bench.md")"; exit 1
 fi

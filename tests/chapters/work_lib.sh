@@ -15,6 +15,8 @@ work_bench() {
     mkdir -p "$dir"
     # the G-buffer layouts' sweep measures something else, and takes long
     "$bench" --help 2>&1 | grep -q -- '--gbuffer-sweep' && extra=(--gbuffer-sweep off)
+    # nor the metallic-roughness rows
+    "$bench" --help 2>&1 | grep -q -- '--pbr-scenes' && extra+=(--pbr-scenes none)
     # --max-frame-ms 1e9: every case runs; the skip predictor times frames, which a busy machine slows
     "$bench" --scenes "$3" --lights "$4" --renderers "$5" --size 800x800 --frames 1 --warmup 0 --cutoffs 5 \
         --cutoff-lights 64 --error-max-lights 0 --max-frame-ms 1e9 --no-plots "${extra[@]}" --out "$dir" \

@@ -63,8 +63,9 @@ bool bench_gbuffer_only(void)
 void bench_gbuffer_print_help(FILE *f)
 {
     fprintf(f, "  --gbuffer-sweep MODE   on: after the sweeps, every G-buffer layout (common/render/gbuffer.h) on\n"
-               "                        the default scene and the city: bytes, time, normal, position and\n"
-               "                        picture error (DIR/bench_gbuffer.csv, a section of bench.md);\n"
+               "                        the default scene, the city and the PBR teapots (the layouts that\n"
+               "                        can hold them): bytes, time, normal, position and picture error\n"
+               "                        (DIR/bench_gbuffer.csv, a section of bench.md);\n"
                "                        off; only: nothing else (--full: on; otherwise off)\n");
 }
 
@@ -75,6 +76,7 @@ void bench_gbuffer_print_help(FILE *f)
 typedef struct sweep_gl {
     int width, height;
     bool available[GBUFFER_LAYOUT_COUNT];
+    const char *unavailable[GBUFFER_LAYOUT_COUNT]; /* why a layout is not drawn */
     gbuffer g[GBUFFER_LAYOUT_COUNT];
     deferred_volumes dv[GBUFFER_LAYOUT_COUNT];
     frame_timer timers[GBUFFER_LAYOUT_COUNT];
@@ -138,6 +140,7 @@ static bool sweep_create(sweep_gl *s, int width, int height)
         if (!frame_timer_create(&s->timers[l]))
             return false;
         s->available[l] = gbuffer_layout_available(layout); /* reversed-z without clip control: no */
+        s->unavailable[l] = "not available: no glClipControl";
         if (s->available[l] &&
             (!gbuffer_create_with(&s->g[l], width, height, &(gbuffer_desc){.layout = layout}) ||
              !deferred_volumes_create(&s->dv[l], &s->g[l], GL_RGBA16F)))
@@ -375,7 +378,7 @@ static bool measure_layouts(sweep_gl *s, bench_renderers *br, const bench_measur
     for (int l = 0; l < GBUFFER_LAYOUT_COUNT; l++) {
         layout_row *row = &out[l];
         if (!s->available[l]) {
-            snprintf(row->note, sizeof row->note, "not available: no glClipControl");
+            snprintf(row->note, sizeof row->note, "%s", s->unavailable[l]);
             continue;
         }
         if (!draw_frame(s, l, gs, bench_renderers_target(br)->id) ||
@@ -404,7 +407,17 @@ static bool run_scene(const bench_options *o, int si, bench_renderers *br, bench
     const bool exact = sc.light_count <= o->error_max_lights;
     if (ok) {
         snprintf(key, sizeof key, "gbuffer/%s", bench_gbuffer_scene_names[si]);
-        ok = sweep_create(&s, o->width, o->height) &&
+        ok = sweep_create(&s, o->width, o->height);
+        /* A metallic-roughness scene: the layouts that cannot hold it are listed, not drawn. */
+        bool pbr = false;
+        for (int i = 0; i < sc.material_count; i++)
+            pbr = pbr || sc.materials[i].pbr;
+        for (int l = 0; ok && pbr && l < GBUFFER_LAYOUT_COUNT; l++)
+            if (s.available[l] && !gbuffer_layout_holds_pbr(&gbuffer_layouts[l])) {
+                s.available[l] = false;
+                s.unavailable[l] = "cannot hold metallic-roughness materials (fixed-point RT1): not drawn";
+            }
+        ok = ok &&
              (!exact || bench_measure_make_reference(m, br, &gs, key, LIGHT_DEFAULT_CUTOFF)) &&
              gpu_scene_update(&gs, 0.0f, LIGHT_DEFAULT_CUTOFF, o->width, o->height) &&
              time_layouts(&s, o, br, &gs, R.rows[si]) && measure_layouts(&s, br, m, exact, &gs, R.rows[si]);

@@ -6,7 +6,7 @@
 
 #define R bench_gbuffer_results_now
 
-const char *const bench_gbuffer_scene_names[SCENES] = {"default", "city"};
+const char *const bench_gbuffer_scene_names[SCENES] = {"default", "city", "pbr_teapots"};
 const char *const bench_gbuffer_band_names[3] = {"near", "middle", "far"};
 
 static const char *format_name(GLenum f)
@@ -132,7 +132,10 @@ void bench_gbuffer_write_md(FILE *f, const bench_state *st)
             "more than %.0f° off), left out of the normal and position columns. Picture: against chapter "
             "00's forward renderer at the same cut-off (what the storage alone costs: the agreement tests' "
             "measure), the exact reference (forward, fp32, cut-off 0; up to %d lights, NA beyond) and the "
-            "`reference` layout's picture (largest 8-bit difference, pixels more than 1/255 apart).\n\n",
+            "`reference` layout's picture (largest 8-bit difference, pixels more than 1/255 apart). "
+            "pbr_teapots has metallic-roughness materials: only the layouts that can hold them "
+            "(gbuffer_layout_holds_pbr: a half-float RT1 keeps the sign that marks them) draw it; the others "
+            "are listed as unable to.\n\n",
             o->width, o->height, o->warmup > 0 ? o->warmup : 1, o->frames, R.pass_clock ? R.pass_clock : "frame",
             OTHER_SURFACE_DEG, o->error_max_lights);
     write_layout_table(f);

@@ -9,7 +9,7 @@
 #include "gbuffer.h"
 #include "image.h"
 
-#define SCENES 2
+#define SCENES 3 /* the default scene, the city and the textured PBR teapots */
 #define OTHER_SURFACE_DEG 5.0 /* a normal further off than this belongs to another surface */
 
 /* One third of the covered pixels, by distance from the eye. */
@@ -41,7 +41,7 @@ typedef struct bench_gbuffer_results {
 } bench_gbuffer_results;
 
 extern bench_gbuffer_results bench_gbuffer_results_now;
-extern const char *const bench_gbuffer_scene_names[SCENES]; /* "default", "city" */
+extern const char *const bench_gbuffer_scene_names[SCENES]; /* "default", "city", "pbr_teapots" */
 extern const char *const bench_gbuffer_band_names[3];       /* "near", "middle", "far" */
 
 #endif

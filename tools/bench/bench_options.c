@@ -12,6 +12,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The PBR rows: chapter 00's forward, chapter 11's Forward+ and clustered deferred (the seed's
+ * comparison), and in the pages' sweep chapter 10's tiles too. */
+static const char *const pbr_renderers_full = "forward,forward-plus,deferred-tiled,deferred-clustered";
+static const char *const pbr_renderers_course = "forward,forward-plus,deferred-clustered";
+
 static const char *const default_renderers =
     "forward-naive,forward,forward-plus,deferred-fullscreen,deferred-volumes,deferred-volumes-windowed,"
     "deferred-stencil,deferred-tiled,deferred-clustered";
@@ -34,7 +39,13 @@ void bench_options_print_help(FILE *f)
         "                        at 0.5,1,2,5,10,20,32, the G-buffer sweep and\n"
         "                        the storage table\n"
         "  --quick               small sweep for tests: 160x160, default scene, 1,16,64 lights,\n"
-        "                        3 frames, cut-offs 2,5,16 at 16 lights\n\n"
+        "                        3 frames, cut-offs 2,5,16 at 16 lights\n");
+    fprintf(
+        f,
+        "  Every sweep ends with the PBR rows: the metallic-roughness scenes pbr_teapots (the\n"
+        "  textured teapots, 80 lights) and gltf_engine (a glTF 2.0 sample of Debian's\n"
+        "  assimp-testmodels, 32 lights), each with its own lights at the 5/256 cut-off, drawn by\n"
+        "  forward, forward-plus and deferred-clustered (--full: deferred-tiled too)\n\n"
         "  --lights LIST         light counts, comma-separated; 'scene' = the scene's own lights\n"
         "  --scenes LIST         scene names in --scene-dir or .scene paths\n"
         "  --renderers LIST      of: forward-naive forward forward-prepass forward-lists\n"
@@ -51,6 +62,10 @@ void bench_options_print_help(FILE *f)
         "  --cutoffs LIST        cut-off sweep in 1/256 units; none: no cut-off sweep\n"
         "  --cutoff-scene NAME   scene of the cut-off sweep (default: the first of --scenes)\n"
         "  --cutoff-lights N     light count of the cut-off sweep (default 256)\n"
+        "  --pbr-scenes LIST     the PBR rows' scenes (names or .scene paths), each with its own\n"
+        "                        lights; none: no PBR rows. A scene that does not load (the\n"
+        "                        glTF sample without its package) is listed as not loaded\n"
+        "  --pbr-renderers LIST  the PBR rows' renderers (names as for --renderers)\n"
         "  --size WxH            frame size (default 800x800)\n"
         "  --frames N            timed frames per renderer and case (default 10)\n"
         "  --warmup N            untimed frames first (default 2; llvmpipe compiles shaders at first draw)\n"
@@ -201,6 +216,29 @@ static bool set_scenes(bench_options *o, const char *list)
     return true;
 }
 
+static bool set_pbr_scenes(bench_options *o, const char *list)
+{
+    if (list && strcmp(list, "none") == 0) {
+        o->pbr_scene_count = 0;
+        return true;
+    }
+    if (!split_list(list, o->pbr_scenes, &o->pbr_scene_count))
+        return usage_error("bad --pbr-scenes list", list);
+    return true;
+}
+
+static bool read_pbr_renderer(bench_options *o, int i, const char *item)
+{
+    o->pbr_renderers[i] = bench_renderer_find(item);
+    return o->pbr_renderers[i] >= 0;
+}
+
+static bool set_pbr_renderers(bench_options *o, const char *list)
+{
+    return set_list(o, list, &o->pbr_renderer_count, read_pbr_renderer, "bad --pbr-renderers list",
+                    "unknown renderer in --pbr-renderers (see --renderers)");
+}
+
 /* The defaults go through the same parsers as the options (they cannot fail). */
 static void set_defaults(bench_options *o)
 {
@@ -209,6 +247,8 @@ static void set_defaults(bench_options *o)
     set_scenes(o, "default,city,bunnies,sphere,teapots");
     set_renderers(o, default_renderers);
     set_cutoffs(o, "0.5,1,2,5,10,20,32");
+    set_pbr_scenes(o, "pbr_teapots,gltf_engine");
+    set_pbr_renderers(o, pbr_renderers_full);
     o->cutoff_lights = 256;
     o->width = o->height = 800;
     o->frames = 10, o->warmup = 2, o->min_frames = 3;
@@ -237,6 +277,7 @@ static void set_course(bench_options *o)
     set_lights(o, "1,16,256,1024,scene");
     set_scenes(o, "default,city,teapots");
     set_cutoffs(o, "1,5,20");
+    set_pbr_renderers(o, pbr_renderers_course);
     o->frames = 5, o->warmup = 1; /* a first look: medians of 5 frames, the pages' run takes 10 */
     o->case_budget_ms = 800;
     bench_gbuffer_reset(true);
@@ -251,6 +292,7 @@ static void set_quick(bench_options *o)
     set_lights(o, "1,16,64");
     set_scenes(o, "default");
     set_cutoffs(o, "2,5,16");
+    set_pbr_renderers(o, pbr_renderers_course);
     o->cutoff_lights = 16;
     o->width = o->height = 160;
     o->frames = 3, o->warmup = 1;
@@ -285,6 +327,10 @@ static option_result parse_sweep_option(bench_options *o, const char *a, const c
         good = v && *v && strlen(v) < NAME_MAX_LEN ? (snprintf(o->cutoff_scene, NAME_MAX_LEN, "%s", v), true)
                                                    : usage_error("bad --cutoff-scene", v);
         *have_cutoff_scene = true;
+    } else if (strcmp(a, "--pbr-scenes") == 0) {
+        good = set_pbr_scenes(o, v);
+    } else if (strcmp(a, "--pbr-renderers") == 0) {
+        good = set_pbr_renderers(o, v);
     } else if (strcmp(a, "--cutoff-lights") == 0) {
         good = parse_int(v, 1, 1 << 20, &o->cutoff_lights) || usage_error("bad --cutoff-lights", v);
     } else if (strcmp(a, "--seed") == 0) {

@@ -35,6 +35,10 @@ typedef struct bench_options {
     int cutoff_count;
     char cutoff_scene[NAME_MAX_LEN];
     int cutoff_lights;
+    char pbr_scenes[MAX_LIST][NAME_MAX_LEN]; /* metallic-roughness scenes, each with its own lights */
+    int pbr_scene_count;                     /* 0: no PBR rows (--pbr-scenes none) */
+    int pbr_renderers[MAX_LIST];
+    int pbr_renderer_count;
     int width, height;
     int frames, warmup, min_frames;
     double max_frame_ms, case_budget_ms;

@@ -13,7 +13,7 @@
 #include <math.h>
 #include <string.h>
 
-static const char *const status_names[] = {"measured", "few_frames", "skipped"};
+static const char *const status_names[] = {"measured", "few_frames", "skipped", "not_loaded"};
 
 FILE *bench_report_open_tmp(const char *dir, const char *name, char *tmp, size_t size)
 {
@@ -64,11 +64,11 @@ bool bench_report_write_csv(const bench_state *st)
     fprintf(f, "%s\n", csv_columns);
     for (int i = 0; i < st->row_count; i++) {
         const bench_row *r = &st->rows[i];
-        bool measured = r->status != BENCH_STATUS_SKIPPED;
+        bool measured = r->status == BENCH_STATUS_MEASURED || r->status == BENCH_STATUS_FEW_FRAMES;
         fprintf(f, "%s,%s,%s,%s,%d,%d,%.4g,%d,%d,%d,%d", r->sweep, r->scene, bench_renderer_name(r->renderer),
                 r->own_lights ? "scene" : "generated", r->lights, r->active_lights, r->cutoff * 256.0,
                 st->opt.width, st->opt.height, r->frames, r->warmup);
-        put_num(f, true, "%.3f", r->median_ms);
+        put_num(f, r->status != BENCH_STATUS_NOT_LOADED, "%.3f", r->median_ms);
         put_num(f, measured, "%.3f", r->min_ms);
         put_num(f, measured, "%.3f", r->max_ms);
         put_num(f, r->median_ms > 0, "%.2f", 1000.0 / r->median_ms);
@@ -79,7 +79,7 @@ bool bench_report_write_csv(const bench_state *st)
         put_num(f, r->have_work, "%.0f", r->light_evals);
         put_num(f, r->have_work && r->ideal > 0, "%.4f", r->work_ratio);
         bool deferred = bench_renderer_is_deferred(r->renderer);
-        put_num(f, deferred, "%.0f", bench_renderer_gbuffer_bytes());
+        put_num(f, deferred && r->gbuffer_bytes > 0, "%.0f", r->gbuffer_bytes);
         put_num(f, deferred, "%.0f", bench_renderer_gbuffer_naive_bytes());
         put_num(f, r->have_error8, "%.0f", r->error8.max_abs);
         put_num(f, r->have_error8, "%.5f", r->error8.mean_abs);
@@ -111,10 +111,12 @@ static void best_of_case(const bench_state *st, const char *scene_name, bool own
     }
 }
 
-static void time_cell(FILE *f, const bench_row *r)
+void bench_report_time_cell(FILE *f, const bench_row *r)
 {
     if (!r)
         fprintf(f, " – |");
+    else if (r->status == BENCH_STATUS_NOT_LOADED)
+        fprintf(f, " not loaded |");
     else
         fprintf(f, " %.1f%s |", r->median_ms,
                 r->status == BENCH_STATUS_SKIPPED      ? "*"
@@ -337,7 +339,7 @@ static void write_times(FILE *f, const bench_state *st)
                 continue;
             fprintf(f, "| %d%s |", any->lights, own ? " (scene's)" : "");
             for (int i = 0; i < o->renderer_count; i++)
-                time_cell(f,
+                bench_report_time_cell(f,
                           bench_state_find_row(st, "lights", label, o->renderers[i], own, o->lights[k], -1));
             fprintf(f, "\n");
         }
@@ -426,7 +428,7 @@ static void write_cutoff(FILE *f, const bench_state *st)
             continue;
         fprintf(f, "| %.3g | %s | %d | ", r->cutoff * 256.0, bench_renderer_name(r->renderer),
                 r->active_lights);
-        time_cell(f, r);
+        bench_report_time_cell(f, r);
         write_ratio_cell(f, r);
         if (r->have_error8)
             fprintf(f, " %.4f | %.1f |", r->error8.mean_abs, r->error8.psnr);
@@ -452,6 +454,7 @@ bool bench_report_write_md(const bench_state *st)
     write_light_table(f, st, false);
     write_light_table(f, st, true);
     write_cutoff(f, st);
+    bench_report_write_pbr(f, st);
     if (bench_gbuffer_enabled())
         bench_gbuffer_write_md(f, st);
     if (bench_storage_enabled())

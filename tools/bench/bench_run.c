@@ -3,6 +3,7 @@
 #include "bench_run.h"
 
 #include "frame_timer.h"
+#include "gbuffer.h"
 #include "gl_util.h"
 #include "gpu_scene.h"
 #include "light.h"
@@ -21,7 +22,20 @@ typedef struct run_ctx {
     bench_renderers *br;
     bench_measure *m;
     frame_timer timers[BENCH_RENDERER_MAX]; /* one per renderer: GPU queries are read a frame late */
+    bool chapters_pbr; /* the open chapters were opened on a scene with metallic-roughness materials */
 } run_ctx;
+
+/* A chapter picks its G-buffer layout for the scene it opens on (a metallic-roughness scene needs one
+ * that holds it): when the next scene needs the other kind, the chapters are closed, to reopen on it. */
+static void chapters_follow(run_ctx *x, const scene *s)
+{
+    bool pbr = false;
+    for (int i = 0; i < s->material_count; i++)
+        pbr = pbr || s->materials[i].pbr;
+    if (pbr != x->chapters_pbr)
+        bench_renderers_close_chapters(x->br);
+    x->chapters_pbr = pbr;
+}
 
 /* ---- prediction of slow cases ------------------------------------------------------------------ */
 
@@ -126,6 +140,10 @@ static bool plan_case(run_ctx *x, const gpu_scene *gs, const case_desc *c, case_
         row->lights = c->lights;
         row->active_lights = gs->light_count;
         row->cutoff = c->cutoff;
+        /* A metallic-roughness scene takes a layout that holds it (gbuffer_layout_for_scene). */
+        const gbuffer_layout *layout = gbuffer_layout_for_scene(NULL, gs->src);
+        row->gbuffer_bytes =
+            bench_renderer_is_deferred(row->renderer) && layout ? gbuffer_layout_bytes(layout, false) : 0;
         plan_frames(&x->st->opt, c, row, &p->frames[i], &p->warmup[i]);
         if (p->frames[i] > 0 && (!(p->times[i] = malloc((size_t)p->frames[i] * sizeof(double))) ||
                                  !(p->passes[i] = malloc((size_t)p->frames[i] * BENCH_PASSES * sizeof(double))))) {
@@ -352,6 +370,7 @@ static bool run_scene(run_ctx *x, const char *name, bool light_sweep, bool cutof
     scene own, gen;
     if (!scene_load(path, &own))
         return false;
+    chapters_follow(x, &own);
     if (!scene_load(path, &gen)) {
         scene_destroy(&own);
         return false;
@@ -371,11 +390,49 @@ static bool run_scene(run_ctx *x, const char *name, bool light_sweep, bool cutof
     return ok;
 }
 
+/* One metallic-roughness scene with its own lights, by the PBR renderers. A scene that does not load
+ * (its error logged) gets rows that say so, and the run goes on: the glTF sample needs a package. */
+static bool run_pbr_scene(run_ctx *x, const char *name)
+{
+    const bench_options *o = &x->st->opt;
+    char path[SCENE_PATH_MAX], label[NAME_MAX_LEN];
+    bench_options_find_scene(o, name, path, sizeof path);
+    bench_options_label_scene(name, label, sizeof label);
+    scene own;
+    if (!scene_load(path, &own)) {
+        for (int i = 0; i < o->pbr_renderer_count; i++) {
+            bench_row *row = bench_state_add_row(x->st);
+            if (!row)
+                return false;
+            *row = (bench_row){.sweep = "pbr", .renderer = o->pbr_renderers[i], .own_lights = true,
+                               .status = BENCH_STATUS_NOT_LOADED, .median_ms = NAN};
+            snprintf(row->scene, sizeof row->scene, "%s", label);
+            snprintf(row->note, sizeof row->note, "not loaded: %.100s (the log says why)", path);
+        }
+        x->st->case_index++;
+        return true;
+    }
+    chapters_follow(x, &own);
+    gpu_scene gs;
+    case_desc c = {.sweep = "pbr",
+                   .scene_name = label,
+                   .own_lights = true,
+                   .lights = own.light_count,
+                   .cutoff = LIGHT_DEFAULT_CUTOFF,
+                   .renderer_count = o->pbr_renderer_count};
+    memcpy(c.renderers, o->pbr_renderers, sizeof c.renderers);
+    bool ok = gpu_scene_create(&own, &gs) && run_case(x, &gs, &c);
+    gpu_scene_destroy(&gs);
+    scene_destroy(&own);
+    bench_measure_forget_reference(x->m);
+    return ok;
+}
+
 /* ---- all cases --------------------------------------------------------------------------------- */
 
 int bench_run_count_cases(const bench_options *options)
 {
-    return options->scene_count * options->light_list_count + options->cutoff_count;
+    return options->scene_count * options->light_list_count + options->cutoff_count + options->pbr_scene_count;
 }
 
 static bool run_sweeps(run_ctx *x);
@@ -383,7 +440,7 @@ static bool run_sweeps(run_ctx *x);
 /* Every sweep, with one frame timer per renderer for the pass columns. */
 bool bench_run_all(bench_state *st, bench_renderers *br, bench_measure *m)
 {
-    run_ctx x = {st, br, m, {{0}}};
+    run_ctx x = {st, br, m, {{0}}, false};
     for (int r = 0; r < BENCH_RENDERER_MAX; r++)
         if (!frame_timer_create(&x.timers[r]))
             return false;
@@ -414,5 +471,8 @@ static bool run_sweeps(run_ctx *x)
     }
     if (!cutoff_done && !run_scene(x, o->cutoff_scene, false, true, histories))
         return false;
+    for (int s = 0; s < o->pbr_scene_count; s++)
+        if (!run_pbr_scene(x, o->pbr_scenes[s]))
+            return false;
     return true;
 }

@@ -29,16 +29,18 @@ extern const char *const bench_pass_names[BENCH_PASSES];
 typedef enum bench_status {
     BENCH_STATUS_MEASURED,
     BENCH_STATUS_FEW_FRAMES,
-    BENCH_STATUS_SKIPPED
+    BENCH_STATUS_SKIPPED,
+    BENCH_STATUS_NOT_LOADED /* a PBR row whose scene did not load (its note says which) */
 } bench_status;
 
 typedef struct bench_row {
-    const char *sweep; /* "lights" or "cutoff" */
+    const char *sweep; /* "lights", "cutoff" or "pbr" (a metallic-roughness scene, its own lights) */
     char scene[NAME_MAX_LEN];
     int renderer;    /* bench_renderer_name() and friends take it */
     bool own_lights; /* the scene file's lights, not generated ones */
     int lights, active_lights;
     double cutoff;
+    int gbuffer_bytes; /* per pixel of the layout a deferred renderer draws this scene with; 0: forward */
     int frames, warmup;
     double median_ms, min_ms, max_ms;
     double pass_ms[BENCH_PASSES]; /* median per pass on the pass clock; NAN where it has none */

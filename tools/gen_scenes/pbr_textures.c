@@ -45,6 +45,21 @@ static void put_normal(image *img, int x, int y, double sx, double sy)
     put(img, x, y, byte_of(0.5 - 0.5 * sx / l), byte_of(0.5 - 0.5 * sy / l), byte_of(0.5 + 0.5 / l));
 }
 
+/* The four images of one set as DIR/NAME_base.png, _mr, _normal and _ao; each destroyed. */
+static bool write_set(const char *dir, const char *name, bool ok, image *base, image *mr, image *normal, image *ao)
+{
+    static const char *const suffixes[4] = {"base", "mr", "normal", "ao"};
+    image *images[4] = {base, mr, normal, ao};
+    for (int i = 0; i < 4; i++) {
+        char file[64], path[GEN_PATH_MAX];
+        snprintf(file, sizeof file, "%s_%s.png", name, suffixes[i]);
+        ok = ok && gen_path_join(dir, file, path) && image_write_png(path, images[i]);
+    }
+    for (int i = 0; i < 4; i++)
+        image_destroy(images[i]);
+    return ok;
+}
+
 /* ---- the floor: stone tiles, their bevelled edges, grout ----------------------------------- */
 
 #define TILE_BEVEL 5.0 /* pixels over which a tile's edge falls to the grout */
@@ -86,13 +101,7 @@ static bool write_tiles(const char *dir)
             put(&ao, x, y, byte_of(occlusion), byte_of(occlusion), byte_of(occlusion));
         }
     }
-    char path[GEN_PATH_MAX];
-    ok = ok && gen_path_join(dir, "tiles_base.png", path) && image_write_png(path, &base);
-    ok = ok && gen_path_join(dir, "tiles_mr.png", path) && image_write_png(path, &mr);
-    ok = ok && gen_path_join(dir, "tiles_normal.png", path) && image_write_png(path, &normal);
-    ok = ok && gen_path_join(dir, "tiles_ao.png", path) && image_write_png(path, &ao);
-    image_destroy(&base), image_destroy(&mr), image_destroy(&normal), image_destroy(&ao);
-    return ok;
+    return write_set(dir, "tiles", ok, &base, &mr, &normal, &ao);
 }
 
 /* ---- the box: brushed metal, a painted band, rivets ---------------------------------------- */
@@ -149,16 +158,66 @@ static bool write_panel(const char *dir)
             put(&ao, x, y, byte_of(occlusion), byte_of(occlusion), byte_of(occlusion));
         }
     }
-    char path[GEN_PATH_MAX];
-    ok = ok && gen_path_join(dir, "panel_base.png", path) && image_write_png(path, &base);
-    ok = ok && gen_path_join(dir, "panel_mr.png", path) && image_write_png(path, &mr);
-    ok = ok && gen_path_join(dir, "panel_normal.png", path) && image_write_png(path, &normal);
-    ok = ok && gen_path_join(dir, "panel_ao.png", path) && image_write_png(path, &ao);
-    image_destroy(&base), image_destroy(&mr), image_destroy(&normal), image_destroy(&ao);
-    return ok;
+    return write_set(dir, "panel", ok, &base, &mr, &normal, &ao);
+}
+
+/* ---- the teapots: hammered metal (or glaze), one dimple per cell, the image tiling ----------- */
+
+/* Depth of the dimples at (x, y) in [-1, 0]: each cell of the PBR_TEAPOT_DIMPLES x PBR_TEAPOT_DIMPLES grid
+ * holds one, its centre and radius jittered by the cell's hash; cells wrap round the image's edges, so
+ * the image tiles and a patch's border meets its neighbour's without a step. The profile -(1 - d^2)^2
+ * meets the flat surface without a crease. */
+static double dimple_height(double x, double y, double *deepest)
+{
+    const double n = PBR_TEAPOT_SIZE, pitch = n / PBR_TEAPOT_DIMPLES;
+    int cx = (int)floor(x / pitch), cy = (int)floor(y / pitch);
+    double h = 0.0;
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            int kx = cx + dx, ky = cy + dy;
+            uint32_t hx = (uint32_t)((kx + PBR_TEAPOT_DIMPLES) % PBR_TEAPOT_DIMPLES);
+            uint32_t hy = (uint32_t)((ky + PBR_TEAPOT_DIMPLES) % PBR_TEAPOT_DIMPLES);
+            double ox = (kx + 0.5 + 0.3 * (hash01(hx, hy, 5) - 0.5)) * pitch;
+            double oy = (ky + 0.5 + 0.3 * (hash01(hx, hy, 6) - 0.5)) * pitch;
+            double r = pitch * (0.38 + 0.12 * hash01(hx, hy, 7));
+            double d2 = ((x - ox) * (x - ox) + (y - oy) * (y - oy)) / (r * r);
+            if (d2 < 1.0)
+                h = fmin(h, -(1.0 - d2) * (1.0 - d2));
+        }
+    if (deepest)
+        *deepest = -h;
+    return h;
+}
+
+static bool write_teapot(const char *dir)
+{
+    const int n = PBR_TEAPOT_SIZE;
+    const double depth = 2.0; /* pixels: a dimple's sides lean at most about 14 degrees */
+    image base, mr, normal, ao;
+    bool ok = image_create(&base, n, n) && image_create(&mr, n, n) && image_create(&normal, n, n) &&
+              image_create(&ao, n, n);
+    for (int y = 0; ok && y < n; y++) {
+        for (int x = 0; x < n; x++) {
+            int row = n - 1 - y;
+            double fx = x + 0.5, fy = row + 0.5, dimple;
+            dimple_height(fx, fy, &dimple);
+            /* A near-white map: the material's base colour is the finish, the map its hammering. The
+             * hammer polished the dimples; the flats between them keep a faint tarnish. */
+            double grain = hash01((uint32_t)x / 2, (uint32_t)row / 2, 8);
+            double k = 0.86 + 0.06 * grain + 0.08 * dimple;
+            put(&base, x, y, srgb_byte(k), srgb_byte(k), srgb_byte(k));
+            put(&mr, x, y, 255, byte_of(1.0 - 0.3 * dimple), 255); /* the material's numbers, or less */
+            double sx = 0.5 * depth * (dimple_height(fx + 1.0, fy, NULL) - dimple_height(fx - 1.0, fy, NULL));
+            double sy = 0.5 * depth * (dimple_height(fx, fy + 1.0, NULL) - dimple_height(fx, fy - 1.0, NULL));
+            put_normal(&normal, x, y, sx, sy);
+            double occlusion = 1.0 - 0.15 * dimple;
+            put(&ao, x, y, byte_of(occlusion), byte_of(occlusion), byte_of(occlusion));
+        }
+    }
+    return write_set(dir, "teapot", ok, &base, &mr, &normal, &ao);
 }
 
 bool pbr_textures_write(const char *dir)
 {
-    return write_tiles(dir) && write_panel(dir);
+    return write_tiles(dir) && write_panel(dir) && write_teapot(dir);
 }

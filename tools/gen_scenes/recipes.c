@@ -284,8 +284,8 @@ static void recipes_build_teapots(gen_scene *s, const char *teapot_spec, int tea
 }
 
 /* The same ring of teapots and the same 80 lights, in metallic-roughness materials, round a riveted
- * metal box on a tiled floor, both textured (tools/gen_scenes/pbr_textures.c). The teapot model has no
- * texture coordinates, so the teapots take their material's numbers alone. */
+ * metal box on a tiled floor, all textured (tools/gen_scenes/pbr_textures.c): the teapots' four finishes
+ * share the hammered images, on each patch's own parameter square (teapot.h). */
 static bool recipes_build_pbr_teapots(gen_scene *s, const char *teapot_spec, long teapot_triangles,
                                       const char *textures_rel)
 {
@@ -297,8 +297,8 @@ static bool recipes_build_pbr_teapots(gen_scene *s, const char *teapot_spec, lon
     recipes_build_teapots(kept, teapot_spec, 0, teapot_triangles); /* the places, turns and lights */
     *s = (gen_scene){
         .notes = {"pbr_teapots.scene - teapots.scene in metallic-roughness materials (chapter 18): the 8",
-                  "teapots in gold, copper, red plastic and blue ceramic round a riveted steel box on a",
-                  "tiled floor, both textured with the generated images of ../textures, and the 80 lights."},
+                  "teapots in hammered gold, copper, red plastic and blue ceramic round a riveted steel box",
+                  "on a tiled floor, all textured with the generated images of ../textures, and the 80 lights."},
         .eye = {0, 7.5, 9.5}, .target = {0, 0.4, 0.3}, .fovy = 50, .near_plane = 0.1, .far_plane = 60,
         .ambient = {0.05, 0.05, 0.05}, .kc = 1, .kl = 0.8, .kq = 4};
     int teapot = gen_scene_add_mesh(s, "teapot", teapot_spec, teapot_triangles);
@@ -323,9 +323,13 @@ static bool recipes_build_pbr_teapots(gen_scene *s, const char *teapot_spec, lon
                      {"copper", {0.95, 0.64, 0.54}, 1, 0.5},
                      {"blue_ceramic", {0.15, 0.35, 0.7}, 0, 0.55}};
     int finish[4];
+    snprintf(maps, sizeof maps,
+             "base_map %s/teapot_base.png metal_rough_map %s/teapot_mr.png normal_map %s/teapot_normal.png "
+             "occlusion_map %s/teapot_ao.png",
+             textures_rel, textures_rel, textures_rel, textures_rel);
     for (int i = 0; i < 4; i++)
         finish[i] = gen_scene_add_pbr_material(s, finishes[i].name, finishes[i].base, finishes[i].metallic,
-                                               finishes[i].roughness, "");
+                                               finishes[i].roughness, maps);
     gen_scene_add_object(s, floor_mesh, tiles, (double[3]){0, 0, 0}, 0, (double[3]){24, 1, 24});
     gen_scene_add_object(s, box, panel, (double[3]){0, 0.8, 0}, 30, (double[3]){1.6, 1.6, 1.6});
     for (int i = 1; i < kept->object_count; i++) /* object 0 was the floor */

@@ -1,4 +1,5 @@
-/* teapot.c - Bezier patch tessellation, vertex welding and the OBJ writer. */
+/* teapot.c - Bezier patch tessellation, vertex welding, the patches' texture coordinates and the OBJ
+ * writer. */
 #include "teapot.h"
 
 #include <math.h>
@@ -64,15 +65,27 @@ static int teapot_weld_vertex(teapot_mesh *m, weld_table *w, const double p[3])
     return m->vertex_count++;
 }
 
-static void teapot_add_triangle(teapot_mesh *m, int a, int b, int c)
+/* A triangle of grid points: their welded vertices and their grid numbers (the texture coordinate's
+ * index, since every patch maps its parameter square onto the same image). */
+static void teapot_add_triangle(teapot_mesh *m, const int *index, int a, int b, int c)
 {
-    if (a == b || b == c || a == c) {
+    if (index[a] == index[b] || index[b] == index[c] || index[a] == index[c]) {
         return; /* the collapsed row at the knob tip and the centre of the bottom */
     }
-    m->triangles[m->triangle_count][0] = a;
-    m->triangles[m->triangle_count][1] = b;
-    m->triangles[m->triangle_count][2] = c;
+    const int corner[3] = {a, b, c};
+    for (int k = 0; k < 3; k++) {
+        m->triangles[m->triangle_count][k] = index[corner[k]];
+        m->texcoord_triangles[m->triangle_count][k] = corner[k];
+    }
     m->triangle_count++;
+}
+
+/* The texture coordinate of grid line k of steps: 1 - k / steps, so that s = 1 - v, t = 1 - u. The
+ * patches wind (u, v) clockwise seen from outside with u running down the body from the rim; both
+ * reversed, the image stands upright (t up) and unmirrored (s to the right) on the body. */
+static double teapot_texcoord(int steps, int k)
+{
+    return (double)(steps - k) / steps;
 }
 
 /* y up, standing on y = 0, 1 unit tall: the data is z up and 3.15 tall. */
@@ -107,10 +120,10 @@ static void teapot_add_patch(teapot_mesh *m, weld_table *w, int patch, int steps
     /* The patch data winds (u, v) clockwise seen from outside, hence a-d-c and a-c-b. */
     for (int i = 0; i < steps; i++) {
         for (int j = 0; j < steps; j++) {
-            int a = index[i * (steps + 1) + j], b = index[(i + 1) * (steps + 1) + j];
-            int c = index[(i + 1) * (steps + 1) + j + 1], d = index[i * (steps + 1) + j + 1];
-            teapot_add_triangle(m, a, d, c);
-            teapot_add_triangle(m, a, c, b);
+            int a = i * (steps + 1) + j, b = (i + 1) * (steps + 1) + j;
+            int c = (i + 1) * (steps + 1) + j + 1, d = i * (steps + 1) + j + 1;
+            teapot_add_triangle(m, index, a, d, c);
+            teapot_add_triangle(m, index, a, c, b);
         }
     }
 }
@@ -126,7 +139,8 @@ bool teapot_build_mesh(int steps, teapot_mesh *out)
     *out = (teapot_mesh){.steps = steps};
     out->positions = malloc(sizeof *out->positions * (size_t)max_vertices);
     out->triangles = malloc(sizeof *out->triangles * (size_t)(TEAPOT_PATCH_COUNT * steps * steps * 2));
-    bool ok = index && w.slots && out->positions && out->triangles;
+    out->texcoord_triangles = malloc(sizeof *out->texcoord_triangles * (size_t)(TEAPOT_PATCH_COUNT * steps * steps * 2));
+    bool ok = index && w.slots && out->positions && out->triangles && out->texcoord_triangles;
     if (!ok) {
         log_error("teapot: out of memory");
         teapot_destroy(out);
@@ -143,6 +157,7 @@ void teapot_destroy(teapot_mesh *m)
 {
     free(m->positions);
     free(m->triangles);
+    free(m->texcoord_triangles);
     *m = (teapot_mesh){0};
 }
 
@@ -156,13 +171,23 @@ bool teapot_write_obj(const teapot_mesh *m, const char *path)
     fprintf(f, "# %d x %d quads per patch, seams welded, degenerate triangles dropped\n", m->steps, m->steps);
     fprintf(f, "# y up, standing on y = 0, height 1; %d vertices, %d triangles\n", m->vertex_count,
             m->triangle_count);
+    fprintf(f, "# texture coordinates: each patch's parameter square on the whole image, s = 1 - v, t = 1 - u\n");
     for (int i = 0; i < m->vertex_count; i++) {
         fprintf(f, "v ");
         gen_format_write_vec3(m->positions[i], 6, f);
         fprintf(f, "\n");
     }
+    /* The grid's (steps + 1)^2 parameter pairs, numbered as teapot_add_patch numbers a patch's points. */
+    for (int i = 0; i <= m->steps; i++) {
+        for (int j = 0; j <= m->steps; j++) {
+            char s[32], t[32];
+            fprintf(f, "vt %s %s\n", gen_format_number(teapot_texcoord(m->steps, j), 6, s),
+                    gen_format_number(teapot_texcoord(m->steps, i), 6, t));
+        }
+    }
     for (int i = 0; i < m->triangle_count; i++) {
-        fprintf(f, "f %d %d %d\n", m->triangles[i][0] + 1, m->triangles[i][1] + 1, m->triangles[i][2] + 1);
+        const int *p = m->triangles[i], *t = m->texcoord_triangles[i];
+        fprintf(f, "f %d/%d %d/%d %d/%d\n", p[0] + 1, t[0] + 1, p[1] + 1, t[1] + 1, p[2] + 1, t[2] + 1);
     }
     return gen_path_close_file(f, path);
 }

@@ -4,10 +4,14 @@
  *   teapot_build_mesh(steps, out)   steps x steps quads per patch; seams welded into shared
  *                                   vertices, degenerate triangles dropped
  *   teapot_destroy(m)
- *   teapot_write_obj(m, path)       positions to 6 decimals, 1-based faces, a comment header
+ *   teapot_write_obj(m, path)       positions and texture coordinates to 6 decimals, 1-based
+ *                                   faces, a comment header
  *
  * The mesh is y up, standing on y = 0 and 1 unit tall, wound counter-clockwise seen from
- * outside. Both fallible functions log their own error and return false.
+ * outside. Each patch's parameter square (u, v) is mapped onto the whole image, (s, t) =
+ * (1 - v, 1 - u): the texture coordinates break at every patch border (a vertex there has one
+ * position and one texture coordinate per patch), the positions do not (docs/18_pbr_materials.md).
+ * Both fallible functions log their own error and return false.
  */
 #ifndef TOOLS_GEN_SCENES_TEAPOT_H
 #define TOOLS_GEN_SCENES_TEAPOT_H
@@ -22,7 +26,8 @@ typedef struct teapot_mesh {
     int steps; /* quads per patch edge, for the OBJ's comment */
     double (*positions)[3];
     int vertex_count;
-    int (*triangles)[3];
+    int (*triangles)[3];          /* welded vertex numbers */
+    int (*texcoord_triangles)[3]; /* grid numbers i * (steps + 1) + j: the patch's (u, v) = (i, j) / steps */
     int triangle_count;
 } teapot_mesh;
 
