@@ -79,7 +79,7 @@ static bool mrt_create(int width, int height)
      *    specular and shininess (GL_RGBA8; half floats in the reference layout) */
     f->color[0] = target_texture(l->albedo_format, GL_RGBA, GL_FLOAT, width, height);
     f->color[1] = target_texture(l->normal_format, GL_RGBA, GL_FLOAT, width, height);
-    /*    and RT2, the emissive, only where the scene has some (GL_RGBA16F) */
+    /*    and RT2, the emissive, only where the scene has some (GBUFFER_EMISSIVE_FORMAT: half floats) */
     if (emissive)
         f->color[2] = target_texture(GBUFFER_EMISSIVE_FORMAT, GL_RGBA, GL_FLOAT, width, height);
     /* 2. depth as a texture, not chapter 01's renderbuffer: the lighting pass reads it back */

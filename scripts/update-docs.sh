@@ -13,7 +13,8 @@
 #   shadow-bench.md chapter 14 on the teapots: deferred, Forward+ and forward with 0 to 256 shadowed
 #                   lights, still and moving, with and without the caster culling, against chapter 11
 #                   (scripts/shadow-table.sh), and the issue's targets met or missed
-#   storage/        build/bin/bench --storage only at 320x240: what to store per pixel (docs/16)
+#   storage/        build/bin/bench --storage only at 320x240: what to store per pixel (docs/16);
+#                   that part alone (about 7 minutes): scripts/update-docs.sh --storage-only
 #   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots; its ambient
 #                   sweep (chapters 17 and 19 against chapter 11's lighting pass, then their errors
 #                   against the exact references): bench_ambient.md and its CSV files. By hand, that
@@ -25,9 +26,10 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-quick=false ambient_only=false
+quick=false ambient_only=false storage_only=false
 [ "${1:-}" = "--quick" ] && quick=true
 [ "${1:-}" = "--ambient-only" ] && ambient_only=true
+[ "${1:-}" = "--storage-only" ] && storage_only=true
 "$root/scripts/build.sh" "$root/build" >/dev/null
 renderer=$(build/bin/00_forward --headless --gl-info | sed -n 's/^gl: renderer=//p')
 # llvmpipe's run is the pages' main set; a GPU's goes beside it, so both can be shown side by side.
@@ -48,6 +50,23 @@ stamp_ambient() {
   [ "$1" = "$data/bench" ] || cp "$1"/bench_ambient*.csv "$data/bench/"
   mv "$data/bench/bench_ambient.md.tmp" "$data/bench/bench_ambient.md"
 }
+# What to store per pixel (docs/16_visibility_buffer.md): the storage table on its own, at 320x240 and
+# 3 frames (about 7 minutes on 2 cores; the sweep's 800x800 has 8 times the pixels, and the bunnies'
+# 7.3 M triangles at 4 samples already take seconds a frame here).
+storage_table() {
+  local storage_args=(--size 320x240 --frames 3 --warmup 1)
+  $quick && storage_args=(--quick)
+  build/bin/bench --storage only --out "$data/storage" --no-plots "${storage_args[@]}"
+  { printf '%s\n\n' "$stamp"; cat "$data/storage/bench.md"; } >"$data/storage/bench.md.tmp"
+  mv "$data/storage/bench.md.tmp" "$data/storage/bench.md"
+  echo "wrote $data/storage/bench.md"
+}
+if $storage_only; then
+  storage_table
+  /usr/bin/python3 tests/lessons/doc_generated.py --update "$root"
+  echo "the pages now show it; review with: git diff docs"
+  exit 0
+fi
 if $ambient_only; then # the benchmark's --full settings for that part only, beside the other files
   tmp=$(mktemp -d)
   build/bin/bench --full --ambient-sweep only --no-plots --out "$tmp"
@@ -190,15 +209,7 @@ $quick && shadow_size=160x120 shadow_target=160x120
 mv "$data/shadow-bench.md.tmp" "$data/shadow-bench.md"
 echo "wrote $data/shadow-bench.md"
 
-# What to store per pixel (docs/16_visibility_buffer.md): the storage table on its own, at 320x240 and
-# 3 frames (about 7 minutes on 2 cores; the sweep's 800x800 has 8 times the pixels, and the bunnies'
-# 7.3 M triangles at 4 samples already take seconds a frame here).
-storage_args=(--size 320x240 --frames 3 --warmup 1)
-$quick && storage_args=(--quick)
-build/bin/bench --storage only --out "$data/storage" --no-plots "${storage_args[@]}"
-{ printf '%s\n\n' "$stamp"; cat "$data/storage/bench.md"; } >"$data/storage/bench.md.tmp"
-mv "$data/storage/bench.md.tmp" "$data/storage/bench.md"
-echo "wrote $data/storage/bench.md"
+storage_table
 
 bench_args=(--full --storage off)
 $quick && bench_args=(--quick --storage off)

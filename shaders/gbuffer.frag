@@ -23,7 +23,7 @@ flat in float v_shininess;
 layout(location = 0) out vec4 o_albedo;           // GL_COLOR_ATTACHMENT0: albedo (+ specular in a)
 layout(location = 1) out vec4 o_normal_material;  // GL_COLOR_ATTACHMENT1: normal (+ material)
 #ifdef GBUFFER_EMISSIVE
-layout(location = 2) out vec4 o_emissive;         // GL_COLOR_ATTACHMENT2: emissive (R11F_G11F_B10F)
+layout(location = 2) out vec4 o_emissive;         // GL_COLOR_ATTACHMENT2: emissive (RGBA16F)
 #endif
 
 void main()

@@ -14,7 +14,7 @@
 uniform GBUFFER_SAMPLER u_gbuffer_albedo; // SRGB8_ALPHA8 (texelFetch returns linear albedo) or RGBA8
 uniform GBUFFER_SAMPLER u_gbuffer_normal; // the normal, and the material where RT0 has no room for it
 uniform GBUFFER_SAMPLER u_gbuffer_depth;  // window-space depth in [0,1]
-uniform GBUFFER_SAMPLER u_gbuffer_emissive; // RT2 R11F_G11F_B10F: emissive, where u_gbuffer_has_emissive
+uniform GBUFFER_SAMPLER u_gbuffer_emissive; // RT2 RGBA16F: emissive, where u_gbuffer_has_emissive
 uniform bool u_gbuffer_has_emissive;   // the scene has emissive materials, so the G-buffer has RT2
 uniform int u_gbuffer_normal_encoding; // SHADER_GBUFFER_NORMAL_*: how RT1 holds the normal
 uniform bool u_gbuffer_reversed_z;     // near 1, far 0 (glClipControl: NDC z = window depth)

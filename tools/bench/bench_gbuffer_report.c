@@ -134,7 +134,8 @@ void bench_gbuffer_write_md(FILE *f, const bench_state *st)
             "measure), the exact reference (forward, fp32, cut-off 0; up to %d lights, NA beyond) and the "
             "`reference` layout's picture (largest 8-bit difference, pixels more than 1/255 apart). "
             "pbr_teapots has metallic-roughness materials: only the layouts that can hold them "
-            "(gbuffer_layout_holds_pbr: a half-float RT1 keeps the sign that marks them) draw it; the others "
+            "(gbuffer_layout_holds_pbr: reference, whose half-float RT1 keeps the sign that marks them, and "
+            "oct16, whose 16-bit RT1 has room for roughness and occlusion beside the normal) draw it; the others "
             "are listed as unable to.\n\n",
             o->width, o->height, o->warmup > 0 ? o->warmup : 1, o->frames, R.pass_clock ? R.pass_clock : "frame",
             OTHER_SURFACE_DEG, o->error_max_lights);
