@@ -289,6 +289,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
 }
 
-const app_desc chapter_11 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};
+const app_desc chapter_11 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key,
+                             .takes_reversed_z = true};
 
 CHAPTER_MAIN(chapter_11)

@@ -151,6 +151,6 @@ static void cleanup(app *a)
 }
 
 const app_desc chapter_17 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                             .key = key, .draw_forward = draw_forward};
+                             .key = key, .draw_forward = draw_forward, .takes_reversed_z = true};
 
 CHAPTER_MAIN(chapter_17)

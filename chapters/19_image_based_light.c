@@ -16,9 +16,11 @@
  *   per frame: the IBL_MAX_PICKED most important probes (radius over distance to the eye), blended
  *      per pixel in the shading pass, weight (1 - (d / R)^2)^2; outside every radius, the constant
  * Views: lit; probe, which probe lights each pixel; irradiance; specular (ibl_view.frag, from the
- * G-buffer). With --ssao on (key O) chapter 17's occlusion (common/render/ssao.c: its two passes on
- * the G-buffer, or on forward's depth-normal pre-pass) scales the whole ambient term, the probes'
- * diffuse and specular light as the constant's; the lights' direct terms never (the page says why).
+ * G-buffer); ao and ao-blurred, chapter 17's occlusion raw and as read. With --ssao on (key O)
+ * chapter 17's occlusion (common/render/ssao.c: its two passes on the G-buffer, or on forward's
+ * depth-normal pre-pass; --ao-radius, --ao-samples, --ao-blur as there) scales the whole ambient
+ * term, the probes' diffuse and specular light as the constant's; the lights' direct terms never
+ * (the page says why).
  * Read docs/19_image_based_light.md alongside.
  */
 #include "app.h"
@@ -37,7 +39,7 @@
 #include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
-static const char *const views[] = {"lit", "probe", "irradiance", "specular", NULL};
+static const char *const views[] = {"lit", "probe", "irradiance", "specular", "ao", "ao-blurred", NULL};
 static const char *const switches[] = {"on", "off", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
@@ -54,6 +56,12 @@ static const cli_desc cli = {
             {"ibl-samples", "N", "GGX samples per prefiltered texel, 1 to 1024", NULL, "256", CLI_WHOLE, 1, 1024},
             {"ibl", "ON", "probes on or off (off: chapter 11's picture; key I)", switches, "on"},
             {"ssao", "ON", "chapter 17's ambient occlusion on the probes' light, on or off (key O)", switches, "off"},
+            {"ao-radius", "UNITS", "how far a surface may be and still hide the sky (scene units)", NULL, "0.5",
+             CLI_REAL, 1e-3, 1e3},
+            {"ao-samples", "N", "occlusion directions per pixel, 1 to 64, each marched in 4 steps", NULL, "16",
+             CLI_WHOLE, 1, SHADER_AO_MAX_SAMPLES},
+            {"ao-blur", "N", "occlusion blur window 2N x 2N pixels on the same surface; 0: none", NULL, "2",
+             CLI_WHOLE, 0, 16},
         },
 };
 
@@ -65,7 +73,7 @@ static struct {
     clusters c;
     forward fwd;
     ibl probes;
-    ssao ao; /* chapter 17's occlusion, at its defaults */
+    ssao ao; /* chapter 17's occlusion, with its options */
     GLuint view_program;
     bool captured;
 } state;
@@ -80,13 +88,16 @@ static void bind_ambient(GLuint program, const void *user)
 
 static bool init(app *a)
 {
-    double size, samples;
-    if (!app_extra_number(a, "probe-size", 16, 512, &size) || !app_extra_number(a, "ibl-samples", 1, 1024, &samples))
+    double size, samples, radius, directions, blur;
+    if (!app_extra_number(a, "probe-size", 16, 512, &size) || !app_extra_number(a, "ibl-samples", 1, 1024, &samples) ||
+        !app_extra_number(a, "ao-radius", 1e-3, 1e3, &radius) ||
+        !app_extra_number(a, "ao-samples", 1, SHADER_AO_MAX_SAMPLES, &directions) ||
+        !app_extra_number(a, "ao-blur", 0, 16, &blur))
         return false;
     /* five prefiltered levels (roughness 0, 1/4, ... 1), the last one size / 16 texels */
     const ibl_desc desc = {.size = (int)size, .levels = 5, .samples = (int)samples, .brdf_size = 64,
                            .brdf_samples = 512};
-    const ssao_desc occlusion = {.radius = 0.5f, .samples = 16, .blur = 2};
+    const ssao_desc occlusion = {.radius = (float)radius, .samples = (int)directions, .blur = (int)blur};
     const gl_program_extra extra = {.defines = "IMAGE_BASED_LIGHT 1\nAMBIENT_OCCLUSION 1", .bind = bind_ambient};
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
     a->pass_state = &fullscreen_pass; /* the overlay shows it */
@@ -179,10 +190,17 @@ static bool frame(app *a)
     snprintf(a->overlay_lines, sizeof a->overlay_lines, "probes: %d, %d picked; captured in %.0f ms, %.1f MiB",
              state.probes.count, state.probes.picked_count, state.probes.capture_ms,
              ibl_probes_bytes(&state.probes) / 1048576.0);
-    if (!app_view_is(a, "lit"))
+    bool ao_view = app_view_is(a, "ao") || app_view_is(a, "ao-blurred");
+    if (!app_view_is(a, "lit") && !ao_view)
         return draw_view(a);
-    return app_renderer_is(a, "deferred") ? frame_deferred(a)
-                                          : frame_forward(a, a->target.id, app_renderer_is(a, "forward-plus"));
+    bool was_on = state.ao.on;
+    state.ao.on |= ao_view; /* the occlusion views draw it even when the picture does not use it */
+    bool ok = app_renderer_is(a, "deferred") ? frame_deferred(a)
+                                             : frame_forward(a, a->target.id, app_renderer_is(a, "forward-plus"));
+    if (ok && ao_view)
+        ssao_show(&state.ao, app_view_is(a, "ao"), a->target.id, a->width, a->height);
+    state.ao.on = was_on;
+    return ok;
 }
 
 /* I: the probes on or off (off: chapter 11's constant ambient); U: capture every probe again;
@@ -232,6 +250,6 @@ static void cleanup(app *a)
 long chapter_19_probe_bytes(void) { return ibl_probes_bytes(&state.probes); }
 
 const app_desc chapter_19 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                             .key = key, .draw_forward = draw_forward};
+                             .key = key, .draw_forward = draw_forward, .takes_reversed_z = true};
 
 CHAPTER_MAIN(chapter_19)

@@ -370,7 +370,8 @@ static int app_setup(app *a, const app_desc *desc)
         log_warn("%s: the scene's %d glass object(s) are not drawn by this chapter's %s renderer (chapter 12 adds "
                  "glass; --renderer forward draws it)",
                  desc->cli->program, a->gs.transparent_count, a->cli->renderers[a->renderer]);
-    return !asked || gbuffer_layout_fits_pass(layout, a->pass_state) ? EXIT_CODE_OK : EXIT_CODE_USAGE;
+    return !asked || desc->takes_reversed_z || gbuffer_layout_fits_pass(layout, a->pass_state) ? EXIT_CODE_OK
+                                                                                               : EXIT_CODE_USAGE;
 }
 
 static void app_close(app *a, const app_desc *desc)

@@ -91,6 +91,9 @@ typedef struct app_desc {
     bool (*draw_forward)(app *a, GLuint target);
     bool draws_glass; /* its own renderers draw transparent objects (00, 12); if not, the runner says
                        * once, on stderr, that a scene's glass is left out */
+    bool takes_reversed_z; /* its lighting passes read the G-buffer's depth through gbuffer_read.glsl only,
+                            * never depth-tested (11, 17, 19): --gbuffer reversed-z is accepted though it
+                            * sets a pass state (gbuffer_layout_fits_pass) */
 } app_desc;
 
 int app_run(const app_desc *desc, int argc, char **argv);

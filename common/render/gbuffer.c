@@ -176,8 +176,8 @@ bool gbuffer_layout_fits_pass(const gbuffer_layout *layout, const gl_pass_state 
     if (!is_reversed(layout) || !pass)
         return true;
     log_error("G-buffer layout %s: this chapter's lighting pass reads the G-buffer's depth as standard depth "
-              "(near 0, far 1); reversed-Z needs its tests mirrored (common/render/gbuffer.h); chapters 02 and 03 "
-              "take it",
+              "(near 0, far 1); reversed-Z needs its tests mirrored (common/render/gbuffer.h); chapters 02, 03, 11, "
+              "17 and 19 take it",
               gbuffer_layout_name(layout));
     return false;
 }

@@ -121,7 +121,8 @@
  * of chapters 04 on are written for standard depth (their pass state, and light_volume.frag's
  * `depth >= 1.0`), so the runner refuses reversed-z wherever a chapter sets a lighting pass state
  * (gbuffer_layout_fits_pass); chapters 02 and 03 read depth through gbuffer_read.glsl only and
- * take it.
+ * take it, as do 11, 17 and 19, whose one full-screen shading pass tests nothing (app_desc's
+ * takes_reversed_z).
  */
 #ifndef COMMON_GBUFFER_H
 #define COMMON_GBUFFER_H

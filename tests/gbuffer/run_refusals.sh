@@ -2,7 +2,7 @@
 # run_refusals.sh BIN_DIR - what --gbuffer refuses, with exit 2 and one clear line on stderr:
 # an unknown layout in every chapter, and reversed-z where the chapter's lighting pass tests the
 # G-buffer's depth as standard depth (every chapter with a lighting pass state: 04 on); chapters 02
-# and 03 take it.
+# and 03 take it, and 11, 17 and 19, whose one full-screen shading pass tests no depth.
 set -u
 bin=$1
 pass=0 fail=0
@@ -30,12 +30,14 @@ expect() {
 expect 2 "unknown G-buffer layout 'tiny' (one of: reference compact" 07_face_culling --gbuffer tiny
 expect 2 "unknown G-buffer layout ''" 03_fullscreen_phong --gbuffer
 for chapter in 04_light_volumes 05_attenuation_radius 06_additive_blending 07_face_culling 08_stencil_volumes \
-               09_spot_lights 10_tiled_deferred 11_clustered 12_transparency; do
+               09_spot_lights 10_tiled_deferred 12_transparency 13_msaa 14_shadows 15_light_prepass \
+               16_visibility_buffer; do
   [ -x "$bin/$chapter" ] || continue
   expect 2 "G-buffer layout reversed-z: this chapter's lighting pass reads the G-buffer's depth" \
     "$chapter" --gbuffer reversed-z
 done
-for chapter in 00_forward 02_mrt_gbuffer 03_fullscreen_phong; do
+# 11, 17 and 19 shade in one full-screen pass that reads depth through gbuffer_read.glsl only
+for chapter in 00_forward 02_mrt_gbuffer 03_fullscreen_phong 11_clustered 17_ssao 19_image_based_light; do
   expect 0 "" "$chapter" --gbuffer reversed-z --screenshot "$tmp/shot.png"
 done
 echo "$pass passed, $fail failed"
