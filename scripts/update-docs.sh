@@ -9,7 +9,8 @@
 #                   06's accumulation formats, 07's culling modes and the city, the
 #                   hard-cases page's 200 overlapping lights at six cut-offs, the many-light
 #                   chapters on their scenes, 11's two light assignments, 12's glass and 13's
-#                   sample counts, scripts/msaa-table.sh)
+#                   sample counts, scripts/msaa-table.sh; the "What it costs" tables of chapters 15, 16
+#                   and 17: each option in a section, then the chapters they are measured against)
 #   shadow-bench.md chapter 14 on the teapots: deferred, Forward+ and forward with 0 to 256 shadowed
 #                   lights, still and moving, with and without the caster culling, against chapter 11
 #                   (scripts/shadow-table.sh), and the issue's targets met or missed
@@ -120,6 +121,54 @@ chapter_table() {
   echo
 }
 
+# The tables of chapters 15 to 17's "What it costs": each option of the chapter in a section of its
+# own, then the chapters it is measured against, at 800x800 (the heavy runs 5 frames, said in the
+# section's name); chapter 15 on the PBR teapots at 320x240.
+later_chapters() {
+  local lights
+  for lights in 8 1024; do
+    local args=()
+    [ "$lights" = 1024 ] && args=(--lights 1024)
+    for specular in rgb mono; do
+      header "15-$specular-$lights-lights-800x800"
+      run 15_light_prepass --size 800x800 --specular "$specular" "${args[@]}"
+      echo
+    done
+    header "15-against-$lights-lights-800x800"
+    run 11_clustered --size 800x800 "${args[@]}"
+    run 00_forward --size 800x800 "${args[@]}"
+    echo
+  done
+  header "15-pbr-teapots-320x240-5-frames"
+  for bin in 15_light_prepass 18_pbr_materials 00_forward; do
+    run "$bin" --size 320x240 --frames 5 --scene assets/scenes/pbr_teapots.scene
+  done
+  echo
+  header "16-default-800x800"
+  run 16_visibility_buffer --size 800x800
+  run 11_clustered --size 800x800
+  echo
+  header "16-bunnies-800x800-5-frames"
+  run 16_visibility_buffer --size 800x800 --frames 5 --scene assets/scenes/bunnies.scene
+  run 11_clustered --size 800x800 --frames 5 --scene assets/scenes/bunnies.scene
+  echo
+  local scene
+  for scene in default teapots; do
+    local frames=10
+    [ "$scene" = teapots ] && frames=5
+    local at=(--size 800x800 --frames "$frames" --scene "assets/scenes/$scene.scene")
+    local name="800x800"
+    [ "$frames" = 5 ] && name="800x800-5-frames"
+    header "17-$scene-$name"
+    run 17_ssao "${at[@]}"
+    run 17_ssao "${at[@]}" --renderer forward
+    echo
+    header "17-ssao-off-$scene-$name"; run 17_ssao "${at[@]}" --ssao off; echo
+  done
+  header "17-ao-samples-4-default-800x800"; run 17_ssao --size 800x800 --ao-samples 4; echo
+  header "17-ao-samples-64-default-800x800-5-frames"; run 17_ssao --size 800x800 --frames 5 --ao-samples 64; echo
+}
+
 # The pages' other tables: one option of one chapter at a time (the row says which in its renderer
 # column only when the option is the renderer, so each table's title names what varies).
 {
@@ -194,6 +243,7 @@ chapter_table() {
   scripts/msaa-table.sh build/bin 800x800 13-msaa-default-800x800
   scripts/msaa-table.sh build/bin 800x800 13-msaa-default-1024-800x800 --lights 1024
   scripts/msaa-table.sh build/bin 800x800 13-msaa-city-800x800 --scene assets/scenes/city.scene
+  later_chapters
 } >"$data/chapters.md.tmp"
 mv "$data/chapters.md.tmp" "$data/chapters.md"
 echo "wrote $data/chapters.md"
