@@ -26,6 +26,8 @@
 #include "gl_util.h"
 #include "log.h"
 
+#include <string.h>
+
 static const char *const renderers[] = {"forward", "forward-naive", "forward-prepass", "forward-lists", "forward-plus", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
@@ -104,6 +106,7 @@ static void cleanup(app *a)
 {
     (void)a;
     forward_destroy(&state.fwd);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_00 = {.cli = &cli, .init = init, .frame = frame, .cleanup = cleanup, .draws_glass = true};

@@ -15,6 +15,8 @@
 #include "gl_util.h"
 #include "log.h"
 
+#include <string.h>
+
 static const char *const renderers[] = {"offscreen", "forward", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
@@ -113,6 +115,7 @@ static void cleanup(app *a)
     (void)a;
     offscreen_destroy();
     gl_program_destroy(&state.present_program);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_01 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};

@@ -20,6 +20,8 @@
 #include "gl_util.h"
 #include "log.h"
 
+#include <string.h>
+
 static const char *const renderers[] = {"deferred", "forward", NULL};
 /* Order matches VIEW_* in shaders/gbuffer_view.frag; `final` is last. */
 static const char *const views[] = {"albedo", "normal", "depth", "specular", "final", NULL};
@@ -162,6 +164,7 @@ static void cleanup(app *a)
     gl_program_destroy(&state.view_program);
     deferred_fullscreen_destroy(&state.lighting);
     gbuffer_destroy(&state.gbuf);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_02 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};

@@ -33,6 +33,8 @@
 #include "gbuffer.h"
 #include "log.h"
 
+#include <string.h>
+
 static const char *const renderers[] = {"deferred", "forward", NULL};
 /* lit: the lighting pass; reach: the share of its light loop that does any work; overdraw and
  * volumes: the debug views of every chapter from here on (key V). */
@@ -108,6 +110,7 @@ static void cleanup(app *a)
     deferred_fullscreen_destroy(&state.reach);
     deferred_fullscreen_destroy(&state.lighting);
     gbuffer_destroy(&state.gbuf);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_03 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};

@@ -32,6 +32,8 @@
 #include "light_volumes.h"
 #include "log.h"
 
+#include <string.h>
+
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const views[] = {"lit", "ring", "overdraw", "volumes", NULL};
 
@@ -133,6 +135,7 @@ static void cleanup(app *a)
     debug_views_destroy(&state.views);
     light_volumes_destroy(&state.lv);
     gbuffer_destroy(&state.g);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_05 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};

@@ -34,6 +34,8 @@
 #include "gbuffer.h"
 #include "log.h"
 
+#include <string.h>
+
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const views[] = {"lit", "overdraw", "volumes", NULL};
 static const char *const accum_names[] = {"rgba16f", "rgba8", "rgba32f", NULL};
@@ -136,6 +138,7 @@ static void cleanup(app *a)
     debug_views_destroy(&state.views);
     deferred_volumes_destroy(&state.dv);
     gbuffer_destroy(&state.g);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_06 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};

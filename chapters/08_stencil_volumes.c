@@ -293,6 +293,7 @@ static void cleanup(app *a)
     gl_program_destroy(&state.stencil_program);
     deferred_volumes_destroy(&state.dv);
     gbuffer_destroy(&state.g);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_08 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};

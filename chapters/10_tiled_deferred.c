@@ -30,6 +30,7 @@
 #include "tile_cull.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 enum { TILE_SIZE = 16, VIEW_TILES = 3 }; /* VIEW_TILES: a u_view_mode beside SHADER_VIEW_* */
 #define TILED_DEFINES "TILE_SIZE 16\nVIEW_TILES 3"
@@ -292,6 +293,7 @@ static void cleanup(app *a)
     fbo_destroy(&state.bounds);
     gbuffer_destroy(&state.g);
     free(state.spheres), free(state.tile_bounds), free(state.frustums), free(state.ranges), free(state.list);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_10 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key};

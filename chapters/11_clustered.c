@@ -287,6 +287,7 @@ static void cleanup(app *a)
     (void)a;
     clusters_destroy(&state.c);
     gbuffer_destroy(&state.g);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_11 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup, .key = key,

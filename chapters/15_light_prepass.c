@@ -245,6 +245,7 @@ static void cleanup(app *a)
     gl_program_destroy(&state.combine_program);
     gl_program_destroy(&state.accumulation_program);
     gl_program_destroy(&state.thin_program);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 /* A metallic-roughness highlight needs its specular sums A and B in colour (docs/15_light_prepass.md):

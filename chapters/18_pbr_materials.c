@@ -31,6 +31,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
 /* lit, then the G-buffer's channels: their index is pbr_channels.frag's u_channel. */
@@ -201,6 +202,7 @@ static void cleanup(app *a)
     clusters_destroy(&state.c);
     gbuffer_destroy(&state.g);
     gl_program_destroy(&state.channels_program);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 const app_desc chapter_18 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,

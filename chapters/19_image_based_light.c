@@ -244,6 +244,7 @@ static void cleanup(app *a)
     ibl_probes_destroy(&state.probes);
     ssao_destroy(&state.ao);
     gl_program_destroy(&state.view_program);
+    memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
 /* The GPU memory the probes and the table take (the benchmark's ambient rows). */

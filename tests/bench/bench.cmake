@@ -39,3 +39,9 @@ add_test(NAME bench.ambient
   COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_ambient.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-ambient
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(bench.ambient PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 120)
+# Chapters closed and opened again in one process (the sweep reopens them when the material model
+# changes): every renderer on a Blinn-Phong scene, then on the PBR teapots, must end cleanly.
+add_test(NAME bench.reopen
+  COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_reopen.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-reopen
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(bench.reopen PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 120)
