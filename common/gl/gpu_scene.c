@@ -290,6 +290,20 @@ void gpu_scene_draw(const gpu_scene *gs, GLuint program)
     }
 }
 
+void gpu_scene_draw_into(const gpu_scene *gs, GLuint framebuffer, int width, int height, GLuint program,
+                         const gl_pass_state *state)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(0, 0, width, height);
+    gl_pass_state_apply(state);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glUseProgram(program);
+    gpu_scene_bind_objects(gs, program, SHADER_UNIT_OBJECTS);
+    gpu_scene_draw(gs, program);
+    gl_pass_state_reset();
+}
+
 void gpu_scene_draw_transparent(const gpu_scene *gs, GLuint program, gpu_scene_order order,
                                 const gl_pass_state *const passes[], int pass_count)
 {

@@ -16,6 +16,11 @@
  *                                    objects that share a mesh (the city's 2,490 cubes are one draw);
  *                                    the transparent ones (material opacity < 1) are left out, so
  *                                    the depth pre-pass and the G-buffer never hold them
+ *   gpu_scene_draw_into(gs, framebuffer, width, height, program, state)
+ *                                    framebuffer's colour and depth cleared (0, far), then every
+ *                                    opaque object with program and state, u_objects on
+ *                                    SHADER_UNIT_OBJECTS; leaves gl_pass_state_reset()'s state (SSAO's
+ *                                    depth-normal pre-pass, the benchmark's exact surface)
  *   gpu_scene_draw_transparent(gs, program, order, passes, pass_count)
  *                                    every transparent object, one draw per object and pass state:
  *                                    object by object in `order`, each drawn with passes[0], then
@@ -111,6 +116,8 @@ bool gpu_scene_update(gpu_scene *gs, float time, double cutoff, int width, int h
 void gpu_scene_bind_lights(const gpu_scene *gs, GLuint program, int unit);
 void gpu_scene_bind_objects(const gpu_scene *gs, GLuint program, int unit);
 void gpu_scene_draw(const gpu_scene *gs, GLuint program);
+void gpu_scene_draw_into(const gpu_scene *gs, GLuint framebuffer, int width, int height, GLuint program,
+                         const gl_pass_state *state);
 void gpu_scene_draw_transparent(const gpu_scene *gs, GLuint program, gpu_scene_order order,
                                 const gl_pass_state *const passes[], int pass_count);
 bool gpu_light_is_spot(const gpu_light *l);

@@ -100,15 +100,7 @@ bool ssao_resize(ssao *s, int width, int height)
 bool ssao_draw_prepass(ssao *s, const gpu_scene *gs)
 {
     frame_timer_mark("depth-normal pre-pass");
-    glBindFramebuffer(GL_FRAMEBUFFER, s->normals.id);
-    glViewport(0, 0, s->normals.width, s->normals.height);
-    gl_pass_state_apply(&prepass);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glUseProgram(s->prepass_program);
-    gpu_scene_bind_objects(gs, s->prepass_program, SHADER_UNIT_OBJECTS);
-    gpu_scene_draw(gs, s->prepass_program);
-    gl_pass_state_reset();
+    gpu_scene_draw_into(gs, s->normals.id, s->normals.width, s->normals.height, s->prepass_program, &prepass);
     return gl_check("ssao depth-normal pre-pass");
 }
 

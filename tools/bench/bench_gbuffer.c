@@ -158,15 +158,8 @@ static bool draw_frame(sweep_gl *s, int l, const gpu_scene *gs, GLuint target)
 /* The float position and normal of every covered pixel, as the geometry pass computes them. */
 static bool draw_exact(sweep_gl *s, const gpu_scene *gs)
 {
-    glBindFramebuffer(GL_FRAMEBUFFER, s->exact.id);
-    glViewport(0, 0, s->width, s->height);
-    gl_pass_state_apply(&(gl_pass_state){.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true});
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glUseProgram(s->exact_program);
-    gpu_scene_bind_objects(gs, s->exact_program, SHADER_UNIT_OBJECTS);
-    gpu_scene_draw(gs, s->exact_program);
-    gl_pass_state_reset();
+    gpu_scene_draw_into(gs, s->exact.id, s->width, s->height, s->exact_program,
+                        &(gl_pass_state){.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return fbo_read_float(&s->exact, 0, s->exact_position) && fbo_read_float(&s->exact, 1, s->exact_normal);
 }
