@@ -238,11 +238,12 @@ void ibl_probes_destroy(ibl *b)
 {
     for (int i = 0; i < b->count; i++)
         gl_texture_destroy(&b->probes[i].radiance), gl_texture_destroy(&b->probes[i].specular);
+    GLuint *const programs[] = {&b->prefilter_program, &b->brdf_program};
+    for (int i = 0; i < 2; i++)
+        gl_program_destroy(programs[i]);
     gl_texture_destroy(&b->brdf);
     gl_renderbuffer_destroy(&b->depth);
     gl_framebuffer_destroy(&b->framebuffer);
-    gl_program_destroy(&b->prefilter_program);
-    gl_program_destroy(&b->brdf_program);
     forward_destroy(&b->capture);
     b->count = 0;
 }
