@@ -86,8 +86,8 @@ function(chapter_16_tests)
 
   # Chapter 14's shadows (--shadows N, docs/16_visibility_buffer.md "Shadows"): the shading pass's
   # cluster loop reads the atlas at the rebuilt surface, forward at the rasterised one: the same picture
-  # within the chapter's bound (measured on llvmpipe at 320 x 240: @T16@ pixels of 76,800 over 1/255
-  # on the teapots); forward itself is chapter 14's, to the byte; and shadows change the picture.
+  # within the chapter's bound (measured on llvmpipe at 320 x 240: 2 pixels of 76,800 over 1/255
+  # on the teapots, max 4/255); forward itself is chapter 14's, to the byte; and shadows change the picture.
   if(TARGET 14_shadows)
     set(SH --shadows 80 --scene ${A}/teapots.scene)
     course_agreement_test(16_shadows_vs_forward_teapots 1 0.0001 ${C} ${SH} VS ${C} --renderer forward ${SH})

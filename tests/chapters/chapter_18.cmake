@@ -104,7 +104,8 @@ function(chapter_18_tests)
   endif()
 
   # Chapter 14's shadows (--shadows N, docs/18_pbr_materials.md "Shadows") on the PBR teapots: deferred
-  # against forward (measured on llvmpipe at 320 x 240: @T18@ pixels of 76,800 over 1/255), chapter 14's
+  # against forward (measured on llvmpipe at 320 x 240: 3 pixels of 76,800 over 1/255, max
+  # 3/255: the half-float normal on the rims, as 18_vs_forward), chapter 14's
   # picture to the byte at exposure 1 (as 18_is_11 without them), forward chapter 14's; and shadows
   # change the picture.
   if(TARGET 14_shadows)
