@@ -6,8 +6,9 @@
  * the point, read from the atlas; chapter 00's forward reads the same atlas (--renderer forward).
  *
  * Taken over: chapter 11's grid, lists and both shading passes (chapters.h), chapter 00's forward
- * renderer, the G-buffer. New here (chapters/shadow_plan.c, chapters/shadow_atlas.c,
- * shaders/shadows.glsl; docs/14_shadows.md):
+ * renderer, the G-buffer. New here (the plan and the atlas are written in common/shadows/, since
+ * chapters 15 to 19 cast the same shadows: shadow_plan.c, shadow_atlas.c; shaders/shadows.glsl;
+ * docs/14_shadows.md):
  *   1. the plan: importance = min(1, radius / distance to the eye); tier k (1024 >> k texels) from
  *      importance 0.5 / 2^k, with hysteresis; the --shadows most important lights packed largest
  *      first in Z order; when they do not fit, the least important take the smallest tiles, then go
@@ -38,7 +39,7 @@
 static const char *const renderers[] = {"deferred", "forward-plus", "forward", NULL};
 static const char *const views[] = {"lit", "visibility", "atlas", "importance", NULL};
 static const char *const formats[] = {"d32f", "d16", NULL};
-static const char *const pcfs[] = {"1", "3", "5", NULL};
+const char *const chapter_14_pcfs[] = {"1", "3", "5", NULL}; /* chapters 15 to 19 offer them too */
 static const char *const switches[] = {"on", "off", NULL};
 
 /* What this chapter adds to the shared command line (--help prints it). */
@@ -53,7 +54,7 @@ static const cli_desc cli = {
             {"shadow-atlas", "SIZE", "the atlas's side in texels, a power of two from 256 (default 4096)", NULL, "4096",
              CLI_POWER_OF_TWO, 256, 32768},
             {"shadow-format", "FORMAT", "the atlas's depth format", formats, "d32f"},
-            {"pcf", "N", "comparisons a side averaged per lookup", pcfs, "3"},
+            {"pcf", "N", "comparisons a side averaged per lookup", chapter_14_pcfs, "3"},
             {"normal-offset", "TEXELS", "receivers moved along their normal by this many texels (0 to 8)", NULL, "1.5",
              CLI_REAL, 0, 8},
             {"slope-bias", "FACTOR", "glPolygonOffset factor of the shadow pass (0 to 16)", NULL, "2", CLI_REAL, 0, 16},
@@ -203,11 +204,7 @@ static bool frame(app *a)
 static bool key(app *a, int k)
 {
     (void)a;
-    if (k != 'K')
-        return false;
-    state.atlas.enabled = !state.atlas.enabled;
-    log_info("shadows: %s", state.atlas.enabled ? "on" : "off");
-    return true;
+    return k == 'K' && chapter_14_shadows_key(&state.atlas);
 }
 
 /* Compare mode's left side (key M): chapter 00's forward, reading the same atlas. */
@@ -244,6 +241,45 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
     shadow_atlas_destroy(&state.atlas);
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
+}
+
+/* ---- the shadows in a later chapter (chapters.h: chapters 15 to 19, --shadows N) ----------------- */
+
+bool chapter_14_shadows_create(app *a, shadow_atlas *s, gl_program_extra *extra)
+{
+    double n = 0, size = 4096;
+    GLint max_size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    memset(s, 0, sizeof *s);
+    *extra = (gl_program_extra){0};
+    a->input_error = app_extra(a, "shadow-atlas") && atof(app_extra(a, "shadow-atlas")) > max_size;
+    if (!app_extra_number(a, "shadows", 0, 1 << 20, &n) || !app_extra_number(a, "shadow-atlas", 256, max_size, &size))
+        return false;
+    if (n == 0)
+        return true; /* no atlas, no define: the chapter's own picture */
+    /* chapter 14's defaults for what the later chapters do not offer */
+    const shadow_plan_desc desc = {.atlas_size = (int)size, .max_shadowed = (int)n, .pcf = atoi(app_extra(a, "pcf")),
+                                   .normal_offset = 1.5f, .cull = true};
+    if (!shadow_atlas_create(s, &desc, GL_DEPTH_COMPONENT32F, 2.0f))
+        return false;
+    *extra = shadow_atlas_extra(s);
+    return true;
+}
+
+bool chapter_14_shadows_update(shadow_atlas *s, const gpu_scene *gs)
+{
+    return !s->depth_program || shadow_atlas_update(s, gs);
+}
+
+bool chapter_14_shadows_key(shadow_atlas *s)
+{
+    if (!s->depth_program) {
+        log_info("shadows: none (start with --shadows N to shadow the N most important lights)");
+        return true;
+    }
+    s->enabled = !s->enabled;
+    log_info("shadows: %s", s->enabled ? "on" : "off");
+    return true;
 }
 
 const app_desc chapter_14 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,

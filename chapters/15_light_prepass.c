@@ -32,6 +32,9 @@
  *   (C, A, B); rgb only. 12 + 24 bytes a pixel.
  * Views: lit; light, the diffuse light buffer D (pbr: C); specular, S as the combine pass reads it
  *   back (pbr: A + B).
+ * --shadows N (chapter 14's atlas, chapters.h; off by default): the accumulation pass, built with
+ *   SHADOWS, multiplies each light's two terms by how much of it reaches the pixel; forward and
+ *   Forward+ read the same atlas. Key K turns them off and on.
  * --bench's shaded_pixels: the second geometry pass's fragments (GL_SAMPLES_PASSED).
  * Read docs/15_light_prepass.md alongside.
  */
@@ -62,6 +65,7 @@ static const cli_desc cli = {
              "the light buffer's specular: rgb (two targets, forward's picture) or mono (one channel: "
              "highlights take the diffuse light's colour)",
              speculars, "rgb"},
+            CHAPTER_14_SHADOW_OPTIONS("K"),
         },
 };
 
@@ -76,6 +80,7 @@ static struct {
     fbo thin;  /* RGBA8 normal + shininess (pbr: RGBA16F); depth: a->target's */
     fbo light; /* RGBA16F diffuse (+ specular luminance); rgb: and RGBA16F specular; pbr: and B */
     clusters c;
+    shadow_atlas atlas; /* --shadows N: chapter 14's; nothing made without it */
     GLuint thin_program, accumulation_program, combine_program;
     bool rgb; /* --specular rgb */
     bool pbr; /* the scene has metallic-roughness materials: LIGHT_PREPASS_PBR's buffers and shaders */
@@ -99,10 +104,16 @@ static bool init(app *a)
                  "C, A, B in three RGBA16F, 24 bytes a pixel");
     a->pass_state = &combine_pass; /* the overlay shows it */
     a->work_name = "second geometry pass fragments";
-    /* chapter 11's lists, made where it makes them by default */
-    const clusters_desc lists = {.compute = gl_have_compute()};
+    /* --shadows N: the accumulation pass and forward read chapter 14's atlas (none: no define, no input) */
+    gl_program_extra shadows;
+    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+        return false;
+    app_forward_set_extra(&a->forward, &shadows);
+    /* chapter 11's lists, made where it makes them by default; clusters_use binds the atlas */
+    const clusters_desc lists = {.compute = gl_have_compute(), .extra = shadows};
     state.thin_program = gl_program_load("forward.vert", "light_prepass_thin.frag", defines);
-    state.accumulation_program = gl_program_load("fullscreen.vert", "light_prepass_accum.frag", defines);
+    state.accumulation_program =
+        gl_program_load_extra("fullscreen.vert", "light_prepass_accum.frag", defines, &shadows);
     state.combine_program = gl_program_load("forward.vert", "light_prepass_combine.frag", defines);
     return state.thin_program && state.accumulation_program && state.combine_program &&
            clusters_create(&state.c, &lists);
@@ -211,6 +222,8 @@ static bool combine(app *a)
 
 static bool frame(app *a)
 {
+    if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
+        return false;
     if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
     a->pass_state = &combine_pass;
@@ -221,10 +234,13 @@ static bool frame(app *a)
     return true;
 }
 
-/* B: the light buffer's specular in one channel or three; the targets follow on the next frame. */
+/* B: the light buffer's specular in one channel or three; the targets follow on the next frame.
+ * K: shadows on / off (with --shadows N). */
 static bool key(app *a, int k)
 {
     (void)a;
+    if (k == 'K')
+        return chapter_14_shadows_key(&state.atlas);
     if (k != 'B')
         return false;
     if (state.pbr) {
@@ -240,6 +256,7 @@ static void cleanup(app *a)
 {
     (void)a;
     clusters_destroy(&state.c);
+    shadow_atlas_destroy(&state.atlas);
     fbo_destroy(&state.light);
     fbo_destroy(&state.thin);
     gl_program_destroy(&state.combine_program);

@@ -25,6 +25,9 @@
  * samples averaged in linear radiance before the display encoding).
  * Views: lit; ids, a colour per id (hashed). Glass (chapter 12) is not drawn: the ids hold one
  * surface a sample.
+ * --shadows N (chapter 14's atlas, chapters.h; off by default): the shading pass, built with SHADOWS,
+ * multiplies each light by how much of it reaches the rebuilt surface; forward and Forward+ read the
+ * same atlas. Key K turns them off and on.
  * Read docs/16_visibility_buffer.md alongside.
  */
 #include "app.h"
@@ -52,7 +55,8 @@ static const cli_desc cli = {
     .renderers = renderers,
     .views = views,
     .extras = {{"samples", "N", "ids per sample: N samples per pixel, edge pixels shaded per sample (1: no MSAA)",
-                NULL, "1", CLI_POWER_OF_TWO, 1, VIS_MAX_SAMPLES}},
+                NULL, "1", CLI_POWER_OF_TWO, 1, VIS_MAX_SAMPLES},
+               CHAPTER_14_SHADOW_OPTIONS("K")},
 };
 
 /* 1. visibility pass: chapter 00's pre-pass state (GL_LEQUAL: on a tie the object drawn last wins). */
@@ -71,6 +75,7 @@ static struct {
     fbo ids; /* R32UI ids; depth: a->target's (MSAA: its own, multisampled) */
     vis_meshes meshes;
     clusters c;
+    shadow_atlas atlas; /* --shadows N: chapter 14's; nothing made without it */
     GLuint visibility_program, shading_program;
     GLuint map_samplers[2]; /* the material images read trilinear, without anisotropy (see make_samplers) */
 } state;
@@ -130,10 +135,15 @@ static bool init(app *a)
     state.samples = (int)n;
     char defines[32];
     snprintf(defines, sizeof defines, "VIS_SAMPLES %d", state.samples);
-    const clusters_desc lists = {.compute = gl_have_compute()}; /* chapter 11's default */
+    /* --shadows N: the shading pass and forward read chapter 14's atlas (none: no define, no input) */
+    gl_program_extra shadows;
+    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+        return false;
+    app_forward_set_extra(&a->forward, &shadows);
+    const clusters_desc lists = {.compute = gl_have_compute(), .extra = shadows}; /* chapter 11's default */
     state.visibility_program = gl_program_load("forward.vert", "visibility.frag", NULL);
-    state.shading_program =
-        gl_program_load("fullscreen.vert", "visibility_shade.frag", state.samples > 1 ? defines : NULL);
+    state.shading_program = gl_program_load_extra("fullscreen.vert", "visibility_shade.frag",
+                                                  state.samples > 1 ? defines : NULL, &shadows);
     make_samplers();
     return state.visibility_program && state.shading_program && vis_meshes_create(&state.meshes, &a->gs) &&
            clusters_create(&state.c, &lists);
@@ -212,6 +222,8 @@ static bool shade(app *a)
 
 static bool frame(app *a)
 {
+    if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
+        return false;
     if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
     a->pass_state = &shading_pass;
@@ -222,10 +234,18 @@ static bool frame(app *a)
     return true;
 }
 
+/* K: shadows on / off (with --shadows N). */
+static bool key(app *a, int k)
+{
+    (void)a;
+    return k == 'K' && chapter_14_shadows_key(&state.atlas);
+}
+
 static void cleanup(app *a)
 {
     (void)a;
     clusters_destroy(&state.c);
+    shadow_atlas_destroy(&state.atlas);
     if (state.map_samplers[0]) {
         glDeleteSamplers(2, state.map_samplers);
         gl_live_objects_add(-2);
@@ -238,7 +258,7 @@ static void cleanup(app *a)
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 
-const app_desc chapter_16 = {
-    .cli = &cli, .accepts_scene = accepts_scene, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup};
+const app_desc chapter_16 = {.cli = &cli, .accepts_scene = accepts_scene, .init = init, .resize = resize,
+                             .frame = frame, .cleanup = cleanup, .key = key};
 
 CHAPTER_MAIN(chapter_16)

@@ -18,6 +18,9 @@
  * in the G-buffer layout's encoding) feeds the SAME two passes, then chapter 00's forward (or
  * chapter 11's Forward+) shades, reading the same occlusion. Views: lit; ao, the raw occlusion;
  * ao-blurred, what the ambient term reads. --bench: ssao_ms and ssao_blur_ms beside lighting_ms.
+ * --shadows N (chapter 14's atlas, chapters.h; off by default): the same programs built with SHADOWS
+ * too (gl_program_extra_join), so the lights' direct terms are shadowed while the occlusion scales
+ * the ambient; key K turns the shadows off and on.
  * Read docs/17_ssao.md alongside.
  */
 #include "app.h"
@@ -52,6 +55,7 @@ static const cli_desc cli = {
              SHADER_AO_MAX_SAMPLES},
             {"ao-blur", "N", "blur window 2N x 2N pixels on the same surface; 0: none", NULL, "2", CLI_WHOLE, 0, 16},
             {"ssao", "ON", "ambient occlusion on or off (off: chapter 11's picture; key O)", switches, "on"},
+            CHAPTER_14_SHADOW_OPTIONS("K"),
         },
 };
 
@@ -63,6 +67,8 @@ static struct {
     clusters c;
     forward fwd;
     ssao ao; /* the two passes, their targets and forward's pre-pass (common/render/ssao.c) */
+    shadow_atlas atlas;           /* --shadows N: chapter 14's; nothing made without it */
+    gl_program_extra_pair extras; /* the occlusion's inputs and the atlas's, for every shading program */
 } state;
 
 static bool init(app *a)
@@ -73,8 +79,13 @@ static bool init(app *a)
         !app_extra_number(a, "ao-blur", 0, 16, &blur))
         return false;
     const ssao_desc desc = {.radius = (float)radius, .samples = (int)samples, .blur = (int)blur};
-    /* chapter 11's lists where it makes them by default; its programs and forward's read the occlusion */
-    const gl_program_extra extra = {.defines = "AMBIENT_OCCLUSION 1", .bind = ssao_bind, .user = &state.ao};
+    /* chapter 11's lists where it makes them by default; its programs and forward's read the occlusion,
+     * and with --shadows N chapter 14's atlas */
+    const gl_program_extra occlusion = {.defines = "AMBIENT_OCCLUSION 1", .bind = ssao_bind, .user = &state.ao};
+    gl_program_extra shadows;
+    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+        return false;
+    const gl_program_extra extra = gl_program_extra_join(&state.extras, &occlusion, &shadows);
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
     a->pass_state = &fullscreen_pass; /* the overlay shows it */
     bool ok = ssao_create(&state.ao, &desc) && gbuffer_create(&state.g, a->width, a->height) &&
@@ -120,6 +131,8 @@ static bool frame_deferred(app *a)
 static bool frame(app *a)
 {
     a->shaded_pixels = -1;
+    if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
+        return false;
     bool ok = app_renderer_is(a, "deferred") ? frame_deferred(a)
                                              : frame_forward(a, a->target.id, app_renderer_is(a, "forward-plus"));
     if (ok && state.ao.on && !app_view_is(a, "lit"))
@@ -127,10 +140,13 @@ static bool frame(app *a)
     return ok;
 }
 
-/* O: the occlusion on or off; off, the ambient term is chapter 11's. */
+/* O: the occlusion on or off; off, the ambient term is chapter 11's. K: shadows on / off (with
+ * --shadows N). */
 static bool key(app *a, int k)
 {
     (void)a;
+    if (k == 'K')
+        return chapter_14_shadows_key(&state.atlas);
     if (k != 'O')
         return false;
     state.ao.on = !state.ao.on;
@@ -148,6 +164,7 @@ static void cleanup(app *a)
     clusters_destroy(&state.c);
     gbuffer_destroy(&state.g);
     ssao_destroy(&state.ao);
+    shadow_atlas_destroy(&state.atlas);
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 

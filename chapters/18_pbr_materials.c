@@ -18,6 +18,9 @@
  *      the emissive is RT2, a third target the G-buffer has only for a scene with emissive materials
  *   4. keys that change the light: the ambient (T, Y), and every light moved together (I J K L,
  *      Up, Down), so a highlight can be walked across a surface
+ * --shadows N (chapter 14's atlas, chapters.h; off by default): chapter 11's shading pass and the
+ * forward renderers built with SHADOWS, each light's GGX term times how much of it reaches the
+ * point; key N turns them off and on (K is taken: it moves the lights nearer).
  * Read docs/18_pbr_materials.md alongside.
  */
 #include "app.h"
@@ -51,6 +54,7 @@ static const cli_desc cli = {
             {"exposure", "E", "multiply the linear picture by E before display (keys - and +)", NULL, "1", CLI_REAL,
              1.0 / 64.0, 64.0},
             {"ambient", "K", "multiply the scene's ambient light by K (keys T and Y)", NULL, "1", CLI_REAL, 0.0, 64.0},
+            CHAPTER_14_SHADOW_OPTIONS("N"),
         },
 };
 
@@ -61,6 +65,7 @@ static const float LIGHT_STEP = 0.25f; /* scene units per press of I J K L, Up, 
 static struct {
     gbuffer g;
     clusters c;
+    shadow_atlas atlas; /* --shadows N: chapter 14's; nothing made without it */
     fbo linear;      /* RGBA32F: the lighting pass's linear radiance, before the exposure */
     present_pass present;
     GLuint channels_program;
@@ -84,7 +89,12 @@ static bool init(app *a)
     state.exposure = (float)exposure, state.ambient_scale = (float)ambient;
     glm_vec3_copy(a->scene.ambient, state.ambient);
     apply_ambient(a);
-    const clusters_desc lists = {.compute = gl_have_compute()};
+    /* --shadows N: chapter 11's shading pass and forward read chapter 14's atlas (none: no define) */
+    gl_program_extra shadows;
+    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+        return false;
+    app_forward_set_extra(&a->forward, &shadows);
+    const clusters_desc lists = {.compute = gl_have_compute(), .extra = shadows};
     a->pass_state = &deferred_pass; /* the overlay shows it */
     state.channels_program = gl_program_load("fullscreen.vert", "pbr_channels.frag", NULL);
     return state.channels_program && gbuffer_create(&state.g, a->width, a->height) &&
@@ -111,6 +121,8 @@ static bool draw_channel(app *a)
 
 static bool frame(app *a)
 {
+    if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
+        return false;
     if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
 
@@ -190,6 +202,7 @@ static bool key(app *a, int k)
     case 'L': move_lights(a, LIGHT_STEP, 0, 0); return true;
     case KEY_UP: move_lights(a, 0, LIGHT_STEP, 0); return true;
     case KEY_DOWN: move_lights(a, 0, -LIGHT_STEP, 0); return true;
+    case 'N': return chapter_14_shadows_key(&state.atlas); /* chapter 14's K, which moves lights here */
     default: return false;
     }
 }
@@ -201,6 +214,7 @@ static void cleanup(app *a)
     fbo_destroy(&state.linear);
     clusters_destroy(&state.c);
     gbuffer_destroy(&state.g);
+    shadow_atlas_destroy(&state.atlas);
     gl_program_destroy(&state.channels_program);
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }

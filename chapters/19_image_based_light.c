@@ -21,6 +21,9 @@
  * depth-normal pre-pass; --ao-radius, --ao-samples, --ao-blur as there) scales the whole ambient
  * term, the probes' diffuse and specular light as the constant's; the lights' direct terms never
  * (the page says why).
+ * --shadows N (chapter 14's atlas, chapters.h; off by default): the shading programs built with
+ * SHADOWS too (gl_program_extra_join), so the lights' direct terms are shadowed; the probes still
+ * photograph the unshadowed scene. Key K turns the shadows off and on.
  * Read docs/19_image_based_light.md alongside.
  */
 #include "app.h"
@@ -62,6 +65,7 @@ static const cli_desc cli = {
              CLI_WHOLE, 1, SHADER_AO_MAX_SAMPLES},
             {"ao-blur", "N", "occlusion blur window 2N x 2N pixels on the same surface; 0: none", NULL, "2",
              CLI_WHOLE, 0, 16},
+            CHAPTER_14_SHADOW_OPTIONS("K"),
         },
 };
 
@@ -74,6 +78,8 @@ static struct {
     forward fwd;
     ibl probes;
     ssao ao; /* chapter 17's occlusion, with its options */
+    shadow_atlas atlas;           /* --shadows N: chapter 14's; nothing made without it */
+    gl_program_extra_pair extras; /* the ambient's inputs and the atlas's, for every shading program */
     GLuint view_program;
     bool captured;
 } state;
@@ -98,7 +104,11 @@ static bool init(app *a)
     const ibl_desc desc = {.size = (int)size, .levels = 5, .samples = (int)samples, .brdf_size = 64,
                            .brdf_samples = 512};
     const ssao_desc occlusion = {.radius = (float)radius, .samples = (int)directions, .blur = (int)blur};
-    const gl_program_extra extra = {.defines = "IMAGE_BASED_LIGHT 1\nAMBIENT_OCCLUSION 1", .bind = bind_ambient};
+    const gl_program_extra ambient = {.defines = "IMAGE_BASED_LIGHT 1\nAMBIENT_OCCLUSION 1", .bind = bind_ambient};
+    gl_program_extra shadows; /* --shadows N: chapter 14's atlas too */
+    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+        return false;
+    const gl_program_extra extra = gl_program_extra_join(&state.extras, &ambient, &shadows);
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
     a->pass_state = &fullscreen_pass; /* the overlay shows it */
     state.captured = false;
@@ -184,7 +194,7 @@ static bool frame_deferred(app *a)
 static bool frame(app *a)
 {
     a->shaded_pixels = -1;
-    if (!capture(&a->gs))
+    if (!capture(&a->gs) || !chapter_14_shadows_update(&state.atlas, &a->gs)) /* before anything shades */
         return false;
     ibl_probes_pick(&state.probes, a->gs.view.eye);
     snprintf(a->overlay_lines, sizeof a->overlay_lines, "probes: %d, %d picked; captured in %.0f ms, %.1f MiB",
@@ -204,10 +214,12 @@ static bool frame(app *a)
 }
 
 /* I: the probes on or off (off: chapter 11's constant ambient); U: capture every probe again;
- * O: the occlusion on or off. */
+ * O: the occlusion on or off; K: shadows on / off (with --shadows N). */
 static bool key(app *a, int k)
 {
     (void)a;
+    if (k == 'K')
+        return chapter_14_shadows_key(&state.atlas);
     if (k == 'I') {
         state.probes.on = !state.probes.on;
         log_info("image-based light: %s", state.probes.on ? "on" : "off");
@@ -243,6 +255,7 @@ static void cleanup(app *a)
     gbuffer_destroy(&state.g);
     ibl_probes_destroy(&state.probes);
     ssao_destroy(&state.ao);
+    shadow_atlas_destroy(&state.atlas);
     gl_program_destroy(&state.view_program);
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }

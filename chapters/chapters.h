@@ -5,8 +5,9 @@
  * chapters with arguments: chapters/course_renderers.h.
  *
  * A chapter whose stage a later one builds on exports it here, so that it is written once, in the
- * chapter that teaches it: chapter 07's frame with any G-buffer layout, and chapter 11's clustered
- * passes (chapters 12 and 13 call them, and every chapter's Forward+ through the runner).
+ * chapter that teaches it: chapter 07's frame with any G-buffer layout, chapter 11's clustered
+ * passes (chapters 12 and 13 call them, and every chapter's Forward+ through the runner), and
+ * chapter 14's shadows as chapters 15 to 19 take them (--shadows N).
  */
 #ifndef CHAPTERS_CHAPTERS_H
 #define CHAPTERS_CHAPTERS_H
@@ -15,6 +16,7 @@
 #include "clusters.h"
 #include "deferred_volumes.h"
 #include "gbuffer.h"
+#include "shadow_atlas.h"
 
 extern const app_desc chapter_00, chapter_01, chapter_02, chapter_03, chapter_04, chapter_05, chapter_06,
     chapter_07, chapter_08, chapter_09, chapter_10, chapter_11, chapter_12, chapter_13, chapter_14, chapter_15,
@@ -43,6 +45,32 @@ bool chapter_11_shade_deferred(clusters *c, const gbuffer *g, const gpu_scene *g
                                clusters_view view);
 bool chapter_11_shade_forward(clusters *c, const gpu_scene *gs, const gl_pass_state *pass, clusters_view view);
 extern const app_forward_plus chapter_11_forward_plus;
+
+/* Chapter 14's shadows in a later chapter (15 to 19), off unless asked for:
+ *   CHAPTER_14_SHADOW_OPTIONS(key)    the options it names, as chapter 14 does: --shadows N (the N
+ *                                     most important lights; 0, the default: none), --pcf and
+ *                                     --shadow-atlas; `key` toggles them
+ *   chapter_14_shadows_create(a, s, extra)
+ *                                     with N > 0, the atlas (chapter 14's normal offset, slope bias,
+ *                                     format and culling) and *extra its SHADOWS define and inputs
+ *                                     (shadow_atlas_extra); with N = 0 nothing made and *extra empty,
+ *                                     so the chapter's picture is what it was. False (logged) on a
+ *                                     bad value or a context that cannot make the atlas
+ *   chapter_14_shadows_update(s, gs)  each frame, before anything shades: the tiles and tables
+ *                                     (nothing without an atlas)
+ *   chapter_14_shadows_key(s)         shadows on / off; without an atlas, one line saying how to
+ *                                     start with one
+ *   shadow_atlas_destroy(s) at cleanup (nothing made: nothing to do). */
+extern const char *const chapter_14_pcfs[];
+#define CHAPTER_14_SHADOW_OPTIONS(key)                                                                     \
+    {"shadows", "N", "chapter 14's shadows for the N most important lights (0: none; key " key ")", NULL, "0", \
+     CLI_WHOLE, 0, 1 << 20},                                                                               \
+        {"pcf", "N", "with --shadows: comparisons a side averaged per lookup", chapter_14_pcfs, "3"},     \
+        {"shadow-atlas", "SIZE", "with --shadows: the atlas's side in texels, a power of two from 256", NULL, \
+         "4096", CLI_POWER_OF_TWO, 256, 32768}
+bool chapter_14_shadows_create(app *a, shadow_atlas *s, gl_program_extra *extra);
+bool chapter_14_shadows_update(shadow_atlas *s, const gpu_scene *gs);
+bool chapter_14_shadows_key(shadow_atlas *s);
 
 /* The last line of a chapter: its main(), which hands the runner chapter 11's Forward+ (every chapter
  * offers it) and the chapter; nothing when compiled for the embedding library. */

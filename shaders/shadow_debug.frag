@@ -14,7 +14,7 @@ flat in vec4 v_item;
 flat in vec4 v_more;
 out vec4 o_color;
 
-const float near_plane = 0.05; // SHADOW_NEAR (chapters/shadow_plan.h)
+const float near_plane = 0.05; // SHADOW_NEAR (common/shadows/shadow_plan.h)
 
 vec3 importance_color(float importance)
 {

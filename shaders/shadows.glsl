@@ -1,7 +1,7 @@
 // shadows.glsl - chapter 14's shadow lookup (docs/14_shadows.md): how much of light i reaches p, from
 // the depth atlas. Included by shading.glsl; empty unless the program is built with SHADOWS, so the
 // chapters before 14 compile exactly what they compiled before.
-// Tables (common/base/shader_layout.h; chapters/shadow_atlas.c fills them):
+// Tables (common/base/shader_layout.h; common/shadows/shadow_atlas.c fills them):
 //   u_shadow_lights, one texel per light: first tile (-1: unshadowed), faces (6: a cube, 1: a spot),
 //     the normal offset in texels, the PCF taps a side
 //   u_shadow_tiles, SHADER_SHADOW_TILE_TEXELS per tile: the light's view-projection for that face,
@@ -12,7 +12,7 @@ uniform samplerBuffer u_shadow_lights;
 uniform samplerBuffer u_shadow_tiles;
 
 // The cube face that sees direction d from the light, +X -X +Y -Y +Z -Z = 0..5: its major axis, ties
-// to x before y before z (chapters/shadow_plan.c, shadow_cube_face, decides the same).
+// to x before y before z (common/shadows/shadow_plan.c, shadow_cube_face, decides the same).
 int shadow_cube_face(vec3 d)
 {
     vec3 a = abs(d);

@@ -13,7 +13,8 @@
 // sample's triangle where the pixel centre's ray meets its plane (where forward MSAA runs a
 // primitive's fragment: its attributes extrapolated to the centre), the samples' radiance averaged
 // before the display encoding (chapter 13's resolve). Each pass discards the other's pixels.
-// variants: - | VIS_SAMPLES 4
+// SHADOWS (--shadows N): the cluster loop reads chapter 14's atlas (shade_light_index).
+// variants: - | VIS_SAMPLES 4 | SHADOWS 1 | VIS_SAMPLES 4, SHADOWS 1
 #include "shading.glsl"
 #include "heat.glsl"
 #include "clusters.glsl"

@@ -9,6 +9,11 @@ static const app_forward_plus *forward_plus; /* chapter 11's, set by CHAPTER_MAI
 
 void app_forward_set_plus(const app_forward_plus *plus) { forward_plus = plus; }
 
+void app_forward_set_extra(app_forward *f, const gl_program_extra *extra)
+{
+    f->extra = *extra;
+}
+
 bool app_forward_is(const char *name)
 {
     return name && (forward_variant_find(name) || strcmp(name, "forward-plus") == 0);
@@ -16,7 +21,7 @@ bool app_forward_is(const char *name)
 
 static bool need_forward(app_forward *f)
 {
-    return f->have_fwd || (f->have_fwd = forward_create(&f->fwd));
+    return f->have_fwd || (f->have_fwd = forward_create_with(&f->fwd, &f->extra));
 }
 
 /* Chapter 00's frame with the variant's optimisations. */
@@ -50,7 +55,7 @@ static bool draw_forward_plus(app_forward *f, const gpu_scene *gs, GLuint target
         log_error("Forward+ is chapter 11's: this program did not link it (chapters/chapters.h)");
         return false;
     }
-    const clusters_desc lists = {.compute = gl_have_compute()};
+    const clusters_desc lists = {.compute = gl_have_compute(), .extra = f->extra};
     bool glass = gs->transparent_count > 0;
     if ((!f->have_clusters && !(f->have_clusters = clusters_create(&f->c, &lists))) || (glass && !need_forward(f)))
         return false;

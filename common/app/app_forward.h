@@ -5,6 +5,10 @@
  * chapters/chapters.h's CHAPTER_MAIN (and the embedding library) call before anything draws.
  *
  *   app_forward_set_plus(plus)          Forward+'s frame and count (chapter_11_forward_plus)
+ *   app_forward_set_extra(f, extra)     a chapter's additions to every forward renderer's shading
+ *                                       programs (chapter 14's shadows in chapters 15, 16 and 18),
+ *                                       before the first draw: their defines, and the bind called on
+ *                                       each program before it draws
  *   app_forward_is(name)                whether name is one of them ("forward", "forward-naive",
  *                                       "forward-prepass", "forward-lists", "forward-plus")
  *   app_forward_draw(f, name, gs, target, options, out)
@@ -23,6 +27,7 @@ typedef struct app_forward {
     forward fwd;
     clusters c; /* Forward+'s lists, chapter 11's defaults (compute where the context has it) */
     bool have_fwd, have_clusters;
+    gl_program_extra extra; /* app_forward_set_extra's; none by default */
 } app_forward;
 
 typedef struct app_forward_options {
@@ -45,6 +50,7 @@ typedef struct app_forward_work {
 } app_forward_work;
 
 void app_forward_set_plus(const app_forward_plus *plus);
+void app_forward_set_extra(app_forward *f, const gl_program_extra *extra);
 bool app_forward_is(const char *name);
 bool app_forward_draw(app_forward *f, const char *name, const gpu_scene *gs, GLuint target,
                       app_forward_options options, app_forward_work *out);

@@ -75,8 +75,8 @@
     X(AO_STEPS, 4)           /* points marched along each kernel direction, r/4 apart */               \
     X(AO_NOISE_SIZE, 4)      /* the rotation noise tile: 4 x 4 pixels, removed by a blur that wide */  \
     X(UNIT_IBL_BRDF, 12)     /* chapter 19: the split-sum table (n.v, roughness) -> F0 scale, bias */  \
-    X(UNIT_IBL_PROBES, 8)    /* chapter 19: the picked probes' prefiltered cubes, IBL_MAX_PICKED units \
-                                (chapter 14's and 16's units: not in chapter 19) */               \
+    X(UNIT_IBL_PROBES, 18)   /* chapter 19: the picked probes' prefiltered cubes, IBL_MAX_PICKED units \
+                                past RT2 (chapter 14's shadow units stay free: --shadows N) */    \
     X(IBL_MAX_PICKED, 4)     /* chapter 19: the probes blended per pixel, picked per frame */          \
     X(IBL_SH_COEFFS, 9)      /* chapter 19: spherical harmonics coefficients per probe (bands 0-2) */
 

@@ -7,6 +7,7 @@
 #include "shader_layout.h"
 #include "shader_log.h"
 
+#include <assert.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -282,6 +283,24 @@ void gl_program_extra_bind(const gl_program_extra *extra, GLuint program)
 {
     if (extra && extra->bind)
         extra->bind(program, extra->user);
+}
+
+static void bind_pair(GLuint program, const void *user)
+{
+    const gl_program_extra_pair *pair = user;
+    gl_program_extra_bind(&pair->first, program);
+    gl_program_extra_bind(&pair->second, program);
+}
+
+gl_program_extra gl_program_extra_join(gl_program_extra_pair *pair, const gl_program_extra *first,
+                                       const gl_program_extra *second)
+{
+    pair->first = *first, pair->second = *second;
+    const char *a = first->defines, *b = second->defines;
+    int n = snprintf(pair->defines, sizeof pair->defines, "%s%s%s", a ? a : "", a && b ? "\n" : "", b ? b : "");
+    assert(n < (int)sizeof pair->defines); /* the chapters' own short literals */
+    (void)n;
+    return (gl_program_extra){.defines = a || b ? pair->defines : NULL, .bind = bind_pair, .user = pair};
 }
 
 GLuint gl_compute_program_load(const char *comp, const char *defines)

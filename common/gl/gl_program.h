@@ -14,6 +14,10 @@
  *                                         gl_program_load with extra->defines after `defines` (extra
  *                                         may be NULL: none)
  *   gl_program_extra_bind(extra, program) extra->bind(program, extra->user), when there is one
+ *   gl_program_extra_join(pair, first, second)
+ *                                         both extras as one: their defines joined (first's, then
+ *                                         second's), a bind that calls first's then second's; `pair`
+ *                                         holds them and must outlive every draw with the programs
  *   gl_program_destroy(&program)
  *   gl_shader_dir()                       where shaders are read from: data_dir()/shaders, or
  *                                         $COURSE_SHADER_DIR
@@ -37,9 +41,17 @@ typedef struct gl_program_extra {
     const void *user;
 } gl_program_extra;
 
+/* Two extras made one (chapter 17's occlusion and chapter 14's shadows): gl_program_extra_join's. */
+typedef struct gl_program_extra_pair {
+    gl_program_extra first, second;
+    char defines[256];
+} gl_program_extra_pair;
+
 GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
 GLuint gl_program_load_extra(const char *vert, const char *frag, const char *defines, const gl_program_extra *extra);
 void gl_program_extra_bind(const gl_program_extra *extra, GLuint program);
+gl_program_extra gl_program_extra_join(gl_program_extra_pair *pair, const gl_program_extra *first,
+                                       const gl_program_extra *second);
 GLuint gl_compute_program_load(const char *comp, const char *defines);
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
 void gl_program_destroy(GLuint *program);

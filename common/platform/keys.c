@@ -48,7 +48,10 @@ static const key_binding table[] = {
     {'O', "O", "12", KEY_ACTION_CHAPTER, "glass order: back to front, or the scene's (wrong)"},
     {'K', "K", "14", KEY_ACTION_CHAPTER, "shadows on / off (off: every light unshadowed, chapter 11's picture)"},
     {'B', "B", "15", KEY_ACTION_CHAPTER, "light buffer's specular: rgb (two targets, forward's picture) or mono (one channel)"},
+    {'K', "K", "15", KEY_ACTION_CHAPTER, "shadows on / off (started with --shadows N: chapter 14's atlas)"},
+    {'K', "K", "16", KEY_ACTION_CHAPTER, "shadows on / off (started with --shadows N: chapter 14's atlas)"},
     {'O', "O", "17", KEY_ACTION_CHAPTER, "ambient occlusion on / off (off: chapter 11's picture)"},
+    {'K', "K", "17", KEY_ACTION_CHAPTER, "shadows on / off (started with --shadows N: chapter 14's atlas)"},
     {'1', "1-8", "18", KEY_ACTION_CHAPTER, "view: lit, albedo, metallic, roughness, normal, occlusion, depth, emissive (as --view)"},
     {'-', "-", "18", KEY_ACTION_CHAPTER, "halve the exposure (chapter 18 takes - and + from the generated lights)"},
     {'=', "+", "18", KEY_ACTION_CHAPTER, "double the exposure"},
@@ -57,9 +60,11 @@ static const key_binding table[] = {
     {'I', "IJKL", "18", KEY_ACTION_CHAPTER, "move every light together: away, left, nearer, right (-z, -x, +z, +x)"},
     {KEY_UP, "Up", "18", KEY_ACTION_CHAPTER, "move every light together up"},
     {KEY_DOWN, "Down", "18", KEY_ACTION_CHAPTER, "move every light together down"},
+    {'N', "N", "18", KEY_ACTION_CHAPTER, "shadows on / off (started with --shadows N; K moves the lights here)"},
     {'I', "I", "19", KEY_ACTION_CHAPTER, "image-based light from the probes on / off (off: chapter 11's picture)"},
     {'U', "U", "19", KEY_ACTION_CHAPTER, "capture every probe again (after the lights moved)"},
     {'O', "O", "19", KEY_ACTION_CHAPTER, "chapter 17's ambient occlusion on / off, on the probes' light too (as --ssao)"},
+    {'K', "K", "19", KEY_ACTION_CHAPTER, "shadows on / off (started with --shadows N: chapter 14's atlas)"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])

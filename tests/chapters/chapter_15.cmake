@@ -100,6 +100,23 @@ function(chapter_15_tests)
   set_tests_properties(chapters.15_pbr_mono_refused PROPERTIES LABELS golden
     PASS_REGULAR_EXPRESSION "--specular mono cannot hold a metallic-roughness highlight")
 
+  # Chapter 14's shadows (--shadows N, docs/15_light_prepass.md "Shadows"): the accumulation pass
+  # multiplies each light's two sums (or the metallic-roughness pixel's three) by the atlas's
+  # visibility, forward's shade_light_index the whole light: the same picture within the chapter's
+  # bound (measured on llvmpipe at 320 x 240, pixels over 1/255 of 76,800: teapots 9, 0.0117 %, max
+  # 7/255 at (37,73), the hard cut-off's pixels of 15_vs_forward_teapots, hence its 0.02 %; PBR
+  # teapots 4, 0.0052 %, max 3/255); forward itself is chapter 14's, to the byte; and shadows change
+  # the picture.
+  if(TARGET 14_shadows)
+    set(SH --shadows 80 --scene ${A}/teapots.scene)
+    course_agreement_test(15_shadows_vs_forward_teapots 1 0.0002 ${C} ${SH} VS ${C} --renderer forward ${SH})
+    course_agreement_test(15_shadows_vs_forward_pbr_teapots 1 0.0001 ${C} --shadows 80 ${PBR_TEAPOTS}
+      VS ${C} --renderer forward --shadows 80 ${PBR_TEAPOTS})
+    course_agreement_test(15_shadows_forward_is_14 0 0 ${C} --renderer forward ${SH} VS 14_shadows --renderer forward ${SH})
+    course_agreement_test(15_shadows_differ 1 0.0001 ${C} ${SH} VS ${C} --scene ${A}/teapots.scene)
+    set_tests_properties(agree.15_shadows_differ PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
+  endif()
+
   add_test(NAME chapters.15_bad_specular COMMAND ${C} --headless --specular rg WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(chapters.15_bad_specular PROPERTIES LABELS golden
     PASS_REGULAR_EXPRESSION "unknown --specular value 'rg' \\(one of: rgb mono\\)")

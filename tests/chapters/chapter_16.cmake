@@ -84,6 +84,18 @@ function(chapter_16_tests)
   # The forward renderer the chapter offers is chapter 00's, to the byte.
   course_agreement_test(16_renderer_forward 0 0 ${C} --renderer forward VS 00_forward)
 
+  # Chapter 14's shadows (--shadows N, docs/16_visibility_buffer.md "Shadows"): the shading pass's
+  # cluster loop reads the atlas at the rebuilt surface, forward at the rasterised one: the same picture
+  # within the chapter's bound (measured on llvmpipe at 320 x 240: 2 pixels of 76,800 over 1/255
+  # on the teapots, max 4/255); forward itself is chapter 14's, to the byte; and shadows change the picture.
+  if(TARGET 14_shadows)
+    set(SH --shadows 80 --scene ${A}/teapots.scene)
+    course_agreement_test(16_shadows_vs_forward_teapots 1 0.0001 ${C} ${SH} VS ${C} --renderer forward ${SH})
+    course_agreement_test(16_shadows_forward_is_14 0 0 ${C} --renderer forward ${SH} VS 14_shadows --renderer forward ${SH})
+    course_agreement_test(16_shadows_differ 1 0.0001 ${C} ${SH} VS ${C} --scene ${A}/teapots.scene)
+    set_tests_properties(agree.16_shadows_differ PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
+  endif()
+
   # The id's limits: 4,095 objects and 2^20 triangles a mesh drawn; one more refused at load (exit 2).
   add_test(NAME chapters.16_id_limits
     COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/chapters/run_vis_limits.sh $<TARGET_FILE:${C}>

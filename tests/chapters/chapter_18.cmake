@@ -103,6 +103,20 @@ function(chapter_18_tests)
       PASS_REGULAR_EXPRESSION "G-buffer: 16 bytes/pixel")
   endif()
 
+  # Chapter 14's shadows (--shadows N, docs/18_pbr_materials.md "Shadows") on the PBR teapots: deferred
+  # against forward (measured on llvmpipe at 320 x 240: 3 pixels of 76,800 over 1/255, max
+  # 3/255: the half-float normal on the rims, as 18_vs_forward), chapter 14's
+  # picture to the byte at exposure 1 (as 18_is_11 without them), forward chapter 14's; and shadows
+  # change the picture.
+  if(TARGET 14_shadows)
+    set(SH --shadows 80 ${PBR})
+    course_agreement_test(18_shadows_vs_forward 1 0.0001 ${C} ${SH} VS ${C} --renderer forward ${SH})
+    course_agreement_test(18_shadows_is_14 0 0 ${C} ${SH} VS 14_shadows ${SH})
+    course_agreement_test(18_shadows_forward_is_14 0 0 ${C} --renderer forward ${SH} VS 14_shadows --renderer forward ${SH})
+    course_agreement_test(18_shadows_differ 1 0.0001 ${C} ${SH} VS ${C} ${PBR})
+    set_tests_properties(agree.18_shadows_differ PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
+  endif()
+
   # The keys, driven by a --script: a number key is its view, + and - the exposure, Y the ambient, L and J
   # move every light and back.
   add_test(NAME window.18_pbr_keys

@@ -12,6 +12,7 @@ those of every layer below it, never one above):
     platform  the window or headless context, input, keys, the command line
     render    the passes chapters share (forward, G-buffer, volumes, present)
     clusters  chapter 11's cluster lists, built on render (Forward+, chapters 12 and 13)
+    shadows   chapter 14's shadow plan and depth atlas, built on gl (chapters 15 to 19 cast them too)
     app       the runner every chapter hands itself to: window, overlay, compare, embedding
 The checks:
     1. every header named by an #include "..." in common/ is found in common/ (no chapters/, tools/
@@ -24,7 +25,7 @@ import pathlib
 import re
 import sys
 
-LAYERS = ["base", "model", "scene", "gl", "platform", "render", "clusters", "app"]
+LAYERS = ["base", "model", "scene", "gl", "platform", "render", "clusters", "shadows", "app"]
 MAX_MODULES = 12
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 

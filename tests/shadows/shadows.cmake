@@ -31,3 +31,32 @@ if(TARGET 14_shadows)
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(hard.shadow_reference_teapots PROPERTIES LABELS hard SKIP_RETURN_CODE 77)
 endif()
+
+# Chapters 15 to 19 take chapter 14's atlas with --shadows N, off by default (their own pictures,
+# goldens and agreements are unchanged; their shadowed agreements are in tests/chapters/chapter_NN.cmake):
+# --help names the options and the key (18's is N: its K moves the lights), and the key, driven by a
+# --script, turns them off to the chapter's picture without --shadows, byte for byte, and says how to
+# start with them when there are none.
+if(TARGET 14_shadows)
+  set(A ${CMAKE_SOURCE_DIR}/assets/scenes)
+  foreach(case "15_light_prepass|K|--scene@${A}/teapots.scene" "16_visibility_buffer|K|--scene@${A}/teapots.scene"
+               "17_ssao|K|--scene@${A}/teapots.scene" "18_pbr_materials|N|--scene@${A}/pbr_teapots.scene"
+               "19_image_based_light|K|--scene@${A}/teapots_probes.scene")
+    string(REPLACE "|" ";" parts "${case}")
+    list(GET parts 0 chapter)
+    list(GET parts 1 key)
+    list(GET parts 2 args)
+    string(REPLACE "@" ";" args "${args}")
+    if(NOT TARGET ${chapter})
+      continue()
+    endif()
+    add_test(NAME chapters.${chapter}_help_shadows COMMAND ${chapter} --help WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(chapters.${chapter}_help_shadows PROPERTIES LABELS golden
+      PASS_REGULAR_EXPRESSION "--shadows N +chapter 14's shadows for the N most important.*--pcf N +with --shadows.*--shadow-atlas SIZE +with --shadows.*\n  ${key} +shadows on / off")
+    add_test(NAME window.${chapter}_shadow_keys
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/shadows/run_later_shadow_keys.sh $<TARGET_FILE:imgdiff>
+              ${COURSE_TEST_OUT} $<TARGET_FILE:${chapter}> ${key} ${args}
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(window.${chapter}_shadow_keys PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  endforeach()
+endif()

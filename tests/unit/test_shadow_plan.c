@@ -1,4 +1,4 @@
-/* test_shadow_plan.c - chapter 14's shadow bookkeeping (chapters/shadow_plan.c), without GL:
+/* test_shadow_plan.c - chapter 14's shadow bookkeeping (common/shadows/shadow_plan.c), without GL:
  * importance and tiers with hysteresis, tiles that never overlap and stay inside the atlas, the least
  * important lights shrunk then dropped when the atlas is full, --shadows N, per-tile caster culling
  * (never losing a caster that can reach the tile), and the cache (a still frame draws nothing; a

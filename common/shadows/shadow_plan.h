@@ -1,6 +1,7 @@
 /* shadow_plan.h - chapter 14's shadow bookkeeping, without GL: which lights get shadows, how big their
  * tiles are, where the tiles lie in the atlas, which casters each tile draws, and which tiles must be
- * drawn again this frame (docs/14_shadows.md has the formulas).
+ * drawn again this frame (docs/14_shadows.md has the formulas). In common/ with the atlas it plans
+ * (shadow_atlas.h), which chapters 15 to 19 reuse.
  *
  *   shadow_plan_create(p, desc)            an empty plan for an atlas of desc->atlas_size texels
  *   shadow_plan_destroy(p)
@@ -32,8 +33,8 @@
  * Tiles are squares of power-of-two sides packed in Z order: sorted largest first, each starts where
  * the one before ended, so every tile lies aligned, no two overlap and the atlas fills without holes.
  */
-#ifndef CHAPTERS_SHADOW_PLAN_H
-#define CHAPTERS_SHADOW_PLAN_H
+#ifndef COMMON_SHADOW_PLAN_H
+#define COMMON_SHADOW_PLAN_H
 
 #include <cglm/cglm.h>
 #include <stdbool.h>

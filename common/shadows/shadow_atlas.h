@@ -1,4 +1,5 @@
 /* shadow_atlas.h - chapter 14's depth atlas: the shadow plan (shadow_plan.h) made real each frame.
+ * Written in common/ because chapters 15 to 19 cast the same shadows (their --shadows N).
  *
  *   shadow_atlas_create(s, desc, format, slope_bias)
  *                                   the atlas texture (GL_DEPTH_COMPONENT32F or 16), compared with
@@ -14,12 +15,12 @@
  *                                   gl_pass_state_reset()'s state
  *   shadow_atlas_bind(program, s)   the atlas and the tables on their units (SHADER_UNIT_SHADOW_*), and
  *                                   the samplers of `program` (in use) set to them: the bind of the
- *                                   gl_program_extra that chapter 14 hands to forward and the clusters
+ *                                   gl_program_extra that chapters 14 to 19 hand to forward and the clusters
  *   shadow_atlas_bytes(s)           the atlas's memory
  *   shadow_atlas_extra(s)           that gl_program_extra: "SHADOWS 1" and shadow_atlas_bind
  */
-#ifndef CHAPTERS_SHADOW_ATLAS_H
-#define CHAPTERS_SHADOW_ATLAS_H
+#ifndef COMMON_SHADOW_ATLAS_H
+#define COMMON_SHADOW_ATLAS_H
 
 #include "fbo.h"
 #include "gl_program.h"
