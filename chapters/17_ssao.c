@@ -140,13 +140,16 @@ static bool frame(app *a)
     return ok;
 }
 
-/* O: the occlusion on or off; off, the ambient term is chapter 11's. K: shadows on / off (with
+/* O: the occlusion on or off; off, the ambient term is chapter 11's. T / Y, J / L, B / N: its radius,
+ * directions and blur (ssao_key). K: shadows on / off (with
  * --shadows N). */
 static bool key(app *a, int k)
 {
     (void)a;
     if (k == 'K')
         return chapter_14_shadows_key(&state.atlas);
+    if (ssao_key(&state.ao, k)) /* radius, directions, blur */
+        return true;
     if (k != 'O')
         return false;
     state.ao.on = !state.ao.on;

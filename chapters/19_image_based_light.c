@@ -214,12 +214,15 @@ static bool frame(app *a)
 }
 
 /* I: the probes on or off (off: chapter 11's constant ambient); U: capture every probe again;
+ * T / Y, J / L, B / N: the occlusion's radius, directions and blur (ssao_key);
  * O: the occlusion on or off; K: shadows on / off (with --shadows N). */
 static bool key(app *a, int k)
 {
     (void)a;
     if (k == 'K')
         return chapter_14_shadows_key(&state.atlas);
+    if (ssao_key(&state.ao, k)) /* radius, directions, blur */
+        return true;
     if (k == 'I') {
         state.probes.on = !state.probes.on;
         log_info("image-based light: %s", state.probes.on ? "on" : "off");

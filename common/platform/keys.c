@@ -52,6 +52,12 @@ static const key_binding table[] = {
     {'K', "K", "16", KEY_ACTION_CHAPTER, "shadows on / off (started with --shadows N: chapter 14's atlas)"},
     {'O', "O", "17", KEY_ACTION_CHAPTER, "ambient occlusion on / off (off: chapter 11's picture)"},
     {'K', "K", "17", KEY_ACTION_CHAPTER, "shadows on / off (started with --shadows N: chapter 14's atlas)"},
+    {'T', "T", "17", KEY_ACTION_CHAPTER, "halve the occlusion's radius (as --ao-radius)"},
+    {'Y', "Y", "17", KEY_ACTION_CHAPTER, "double the occlusion's radius"},
+    {'J', "J", "17", KEY_ACTION_CHAPTER, "halve the occlusion's directions (as --ao-samples)"},
+    {'L', "L", "17", KEY_ACTION_CHAPTER, "double the occlusion's directions (64 at most)"},
+    {'B', "B", "17", KEY_ACTION_CHAPTER, "a smaller occlusion blur window (as --ao-blur; 0: none)"},
+    {'N', "N", "17", KEY_ACTION_CHAPTER, "a larger occlusion blur window (16 at most)"},
     {'1', "1-8", "18", KEY_ACTION_CHAPTER, "view: lit, albedo, metallic, roughness, normal, occlusion, depth, emissive (as --view)"},
     {'-', "-", "18", KEY_ACTION_CHAPTER, "halve the exposure (chapter 18 takes - and + from the generated lights)"},
     {'=', "+", "18", KEY_ACTION_CHAPTER, "double the exposure"},
@@ -65,6 +71,12 @@ static const key_binding table[] = {
     {'U', "U", "19", KEY_ACTION_CHAPTER, "capture every probe again (after the lights moved)"},
     {'O', "O", "19", KEY_ACTION_CHAPTER, "chapter 17's ambient occlusion on / off, on the probes' light too (as --ssao)"},
     {'K', "K", "19", KEY_ACTION_CHAPTER, "shadows on / off (started with --shadows N: chapter 14's atlas)"},
+    {'T', "T", "19", KEY_ACTION_CHAPTER, "halve the occlusion's radius (as --ao-radius)"},
+    {'Y', "Y", "19", KEY_ACTION_CHAPTER, "double the occlusion's radius"},
+    {'J', "J", "19", KEY_ACTION_CHAPTER, "halve the occlusion's directions (as --ao-samples)"},
+    {'L', "L", "19", KEY_ACTION_CHAPTER, "double the occlusion's directions (64 at most)"},
+    {'B', "B", "19", KEY_ACTION_CHAPTER, "a smaller occlusion blur window (as --ao-blur; 0: none)"},
+    {'N', "N", "19", KEY_ACTION_CHAPTER, "a larger occlusion blur window (16 at most)"},
 };
 
 #define TABLE_SIZE (sizeof table / sizeof table[0])

@@ -59,6 +59,40 @@ static GLuint make_noise(rng *r)
     return gl_check("ssao noise tile") ? t : 0;
 }
 
+/* The radius, the directions or the blur changed while running (the keys): the kernel and the noise
+ * tile are made again from the same seed, so a count reached by keys draws what --ao-samples would. */
+bool ssao_set(ssao *s, const ssao_desc *desc)
+{
+    rng r = rng_seed(17);
+    make_kernel(&r, desc->samples, s->kernel);
+    GLuint noise = make_noise(&r);
+    if (!noise)
+        return false;
+    glDeleteTextures(1, &s->noise);
+    s->noise = noise;
+    s->desc = *desc;
+    return true;
+}
+
+/* T / Y: the radius halved or doubled; J / L: the directions halved or doubled; B / N: the blur
+ * window one step smaller or larger. Each within --ao-radius's, --ao-samples' and --ao-blur's ranges. */
+bool ssao_key(ssao *s, int key)
+{
+    ssao_desc d = s->desc;
+    switch (key) {
+    case 'T': d.radius = fmaxf(d.radius * 0.5f, 1e-3f); break;
+    case 'Y': d.radius = fminf(d.radius * 2.0f, 1e3f); break;
+    case 'J': d.samples = d.samples > 1 ? d.samples / 2 : 1; break;
+    case 'L': d.samples = d.samples * 2 < SHADER_AO_MAX_SAMPLES ? d.samples * 2 : SHADER_AO_MAX_SAMPLES; break;
+    case 'B': d.blur = d.blur > 0 ? d.blur - 1 : 0; break;
+    case 'N': d.blur = d.blur < 16 ? d.blur + 1 : 16; break;
+    default: return false;
+    }
+    if (ssao_set(s, &d))
+        log_info("ambient occlusion: radius %g, %d directions, blur %d", d.radius, d.samples, d.blur);
+    return true;
+}
+
 bool ssao_create(ssao *s, const ssao_desc *desc)
 {
     *s = (ssao){.desc = *desc, .on = true, .layout = gbuffer_default_layout()};

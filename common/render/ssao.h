@@ -12,6 +12,11 @@
  *                                        normal, as the G-buffer's geometry pass writes it, and depth
  *   ssao_draw(s, g, gs)                  1. SSAO, 2. the blur (desc.blur > 0), from g's surface, or
  *                                        from the pre-pass's when g is NULL
+ *   ssao_set(s, desc)                    another radius, direction count or blur while running (the
+ *                                        kernel and noise made again, as ssao_create would)
+ *   ssao_key(s, key)                     chapter 17's keys (19's too): T / Y radius halved / doubled,
+ *                                        J / L directions halved / doubled, B / N blur -1 / +1;
+ *                                        false for any other key
  *   ssao_bind(program, s)                u_ao and u_ao_on on a program built with AMBIENT_OCCLUSION
  *                                        (a gl_program_extra's bind)
  *   ssao_occlusion(s)                    the texture the ambient term reads (blurred, or raw without
@@ -46,6 +51,8 @@ bool ssao_create(ssao *s, const ssao_desc *desc);
 bool ssao_resize(ssao *s, int width, int height);
 bool ssao_draw_prepass(ssao *s, const gpu_scene *gs);
 bool ssao_draw(ssao *s, const gbuffer *g, const gpu_scene *gs);
+bool ssao_set(ssao *s, const ssao_desc *desc);
+bool ssao_key(ssao *s, int key);
 void ssao_bind(GLuint program, const void *ssao_state);
 GLuint ssao_occlusion(const ssao *s);
 void ssao_show(const ssao *s, bool raw, GLuint target, int width, int height);

@@ -22,3 +22,15 @@ if(TARGET 17_ssao)
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(hard.ssao_reference PROPERTIES LABELS hard SKIP_RETURN_CODE 77)
 endif()
+
+# The occlusion's keys (T / Y, J / L, B / N) draw, byte for byte, what the matching option draws from
+# the start, in chapter 17 and in chapter 19 (which shares them, common/render/ssao.c: ssao_key).
+foreach(chapter 17_ssao 19_image_based_light)
+  if(TARGET ${chapter})
+    add_test(NAME window.${chapter}_ssao_keys
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/ssao/run_ssao_keys.sh $<TARGET_FILE:imgdiff> ${COURSE_TEST_OUT}
+              $<TARGET_FILE:${chapter}> --scene ${CMAKE_SOURCE_DIR}/tests/scenes/ssao_boxes.scene
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(window.${chapter}_ssao_keys PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  endif()
+endforeach()
