@@ -44,4 +44,4 @@ set_tests_properties(bench.ambient PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77
 add_test(NAME bench.reopen
   COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_reopen.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-reopen
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-set_tests_properties(bench.reopen PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 120)
+set_tests_properties(bench.reopen PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 300)
