@@ -291,8 +291,7 @@ static void cleanup(app *a)
     debug_views_destroy(&state.views);
     light_batches_destroy(&state.lb);
     gl_program_destroy(&state.stencil_program);
-    deferred_volumes_destroy(&state.dv);
-    gbuffer_destroy(&state.g);
+    deferred_volumes_destroy(&state.dv), gbuffer_destroy(&state.g);
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
 

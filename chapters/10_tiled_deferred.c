@@ -290,8 +290,7 @@ static void cleanup(app *a)
     GLuint *programs[] = {&state.cull_program, &state.shade_program, &state.bounds_program};
     for (int i = 0; i < 3; i++)
         gl_program_destroy(programs[i]), gl_buffer_destroy(buffers[i]), gl_texture_destroy(textures[i]);
-    fbo_destroy(&state.bounds);
-    gbuffer_destroy(&state.g);
+    fbo_destroy(&state.bounds), gbuffer_destroy(&state.g);
     free(state.spheres), free(state.tile_bounds), free(state.frustums), free(state.ranges), free(state.list);
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }
