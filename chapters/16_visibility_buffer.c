@@ -25,6 +25,9 @@
  * samples averaged in linear radiance before the display encoding).
  * Views: lit; ids, a colour per id (hashed). Glass (chapter 12) is not drawn: the ids hold one
  * surface a sample.
+ * --vis-pass MODE times what the visibility pass is made of, with pictures that are not the chapter's:
+ * no-primitive-id writes triangle 0 instead of gl_PrimitiveID (visibility.frag built with
+ * VIS_NO_PRIMITIVE_ID), depth-only the same program with no colour drawn (the ids stay the background).
  * --shadows N (chapter 14's atlas, chapters.h; off by default): the shading pass, built with SHADOWS,
  * multiplies each light by how much of it reaches the rebuilt surface; forward and Forward+ read the
  * same atlas. Key K turns them off and on.
@@ -46,6 +49,8 @@
 
 static const char *const renderers[] = {"deferred", "forward", NULL};
 static const char *const views[] = {"lit", "ids", NULL};
+static const char *const vis_passes[] = {"full", "no-primitive-id", "depth-only", NULL};
+enum { VIS_FULL, VIS_NO_PRIMITIVE_ID, VIS_DEPTH_ONLY }; /* --vis-pass, in vis_passes' order */
 
 /* What this chapter adds to the shared command line (--help prints it). */
 static const cli_desc cli = {
@@ -56,6 +61,9 @@ static const cli_desc cli = {
     .views = views,
     .extras = {{"samples", "N", "ids per sample: N samples per pixel, edge pixels shaded per sample (1: no MSAA)",
                 NULL, "1", CLI_POWER_OF_TWO, 1, VIS_MAX_SAMPLES},
+               {"vis-pass", "MODE", "the visibility pass: full (the chapter's); timing only, wrong pictures: "
+                "no-primitive-id (triangle 0, gl_PrimitiveID not read), depth-only (no id written either: "
+                "the background)", vis_passes, "full"},
                CHAPTER_14_SHADOW_OPTIONS("K")},
 };
 
@@ -71,7 +79,7 @@ static const gl_pass_state shading_pass = {.depth_write = false};
 enum { VIS_PASS_PIXELS, VIS_PASS_EDGES }; /* visibility_shade.frag's u_pass (MSAA only) */
 
 static struct {
-    int samples;
+    int samples, vis_pass;
     fbo ids; /* R32UI ids; depth: a->target's (MSAA: its own, multisampled) */
     vis_meshes meshes;
     clusters c;
@@ -141,7 +149,12 @@ static bool init(app *a)
         return false;
     app_forward_set_extra(&a->forward, &shadows);
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = shadows}; /* chapter 11's default */
-    state.visibility_program = gl_program_load("forward.vert", "visibility.frag", NULL);
+    state.vis_pass = cli_choice_index(vis_passes, app_extra(a, "vis-pass"));
+    if (state.vis_pass != VIS_FULL)
+        log_warn("16_visibility_buffer: --vis-pass %s: the picture is not the chapter's, timing only",
+                 vis_passes[state.vis_pass]);
+    state.visibility_program = gl_program_load("forward.vert", "visibility.frag",
+                                               state.vis_pass != VIS_FULL ? "VIS_NO_PRIMITIVE_ID 1" : NULL);
     state.shading_program = gl_program_load_extra("fullscreen.vert", "visibility_shade.frag",
                                                   state.samples > 1 ? defines : NULL, &shadows);
     make_samplers();
@@ -176,9 +189,12 @@ static bool draw_visibility(const gpu_scene *gs)
     gl_pass_state_apply(&visibility_pass);
     glClearBufferuiv(GL_COLOR, 0, background); /* an integer target: glClearColor does not apply */
     glClear(GL_DEPTH_BUFFER_BIT);
+    if (state.vis_pass == VIS_DEPTH_ONLY)
+        glDrawBuffer(GL_NONE); /* after the clear: the ids stay the background */
     glUseProgram(state.visibility_program);
     gpu_scene_bind_objects(gs, state.visibility_program, SHADER_UNIT_OBJECTS);
     gpu_scene_draw(gs, state.visibility_program);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
     gl_pass_state_reset();
     return gl_check("16 visibility pass");
 }

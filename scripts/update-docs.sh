@@ -78,15 +78,16 @@ if $ambient_only; then # the benchmark's --full settings for that part only, bes
   exit 0
 fi
 
-# One table row from a --bench line: chapter, renderer, median, passes, shaded pixels.
-row() {
-  awk '/^bench:/ {
+# One table row from a --bench line: chapter, renderer (then LABEL, when given), median, passes,
+# shaded pixels.
+row() { # [LABEL]
+  awk -v label="${1:-}" '/^bench:/ {
     for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2]
       if (kv[1] ~ /_ms$/ && kv[1] !~ /^(median|min|max|mean)_ms$/) {
         name = substr(kv[1], 1, length(kv[1]) - 3); gsub("_", " ", name)
         passes = passes (passes ? ", " : "") name " " kv[2] } }
     shaded = v["shaded_pixels"] == "-1" ? "—" : v["shaded_pixels"]   # the chapter does not count them
-    printf "| %s | %s | %s | %s | %s |\n", v["chapter"], v["renderer"], v["median_ms"], passes, shaded
+    printf "| %s | %s%s | %s | %s | %s |\n", v["chapter"], v["renderer"], label, v["median_ms"], passes, shaded
   }'
 }
 
@@ -95,11 +96,17 @@ header() { # TITLE
 }
 
 # One --bench run as a table row: BINARY ARGS... (the default scene by name unless ARGS give one:
-# chapters 09 and 12 open on their lesson's scene)
+# chapters 09 and 12 open on their lesson's scene). A --vis-pass MODE in ARGS, which the bench line
+# does not name, follows the renderer ("deferred --vis-pass depth-only"): one section runs chapter 16
+# with each mode.
 run() {
-  local scene=(--scene assets/scenes/default.scene)
-  case " ${*:2} " in *" --scene "*) scene=() ;; esac
-  "build/bin/$1" --headless --bench --frames 10 "${scene[@]}" "${@:2}" | row
+  local scene=(--scene assets/scenes/default.scene) args=" ${*:2} " label=""
+  case $args in *" --scene "*) scene=() ;; esac
+  if [[ $args == *" --vis-pass "* ]]; then
+    label=${args#* --vis-pass }
+    label=" --vis-pass ${label%% *}"
+  fi
+  "build/bin/$1" --headless --bench --frames 10 "${scene[@]}" "${@:2}" | row "$label"
 }
 
 # chapter_table TITLE ARGS...: every chapter, deferred then forward (chapter 00: its four renderers).
@@ -150,6 +157,11 @@ later_chapters() {
   echo
   header "16-bunnies-800x800-5-frames"
   run 16_visibility_buffer --size 800x800 --frames 5 --scene assets/scenes/bunnies.scene
+  # what the visibility pass's time is made of: timing only, wrong pictures (docs/16, "What it costs")
+  local vis_pass
+  for vis_pass in no-primitive-id depth-only; do
+    run 16_visibility_buffer --size 800x800 --frames 5 --scene assets/scenes/bunnies.scene --vis-pass "$vis_pass"
+  done
   run 11_clustered --size 800x800 --frames 5 --scene assets/scenes/bunnies.scene
   echo
   local scene

@@ -9,5 +9,11 @@ layout(location = 0) out uint o_id;
 
 void main()
 {
+#ifdef VIS_NO_PRIMITIVE_ID
+    // chapter 16's --vis-pass no-primitive-id and depth-only: every pixel of an object its first
+    // triangle, a wrong picture that times the pass without gl_PrimitiveID
+    o_id = uint(v_object + 1) << SHADER_VIS_TRIANGLE_BITS;
+#else
     o_id = (uint(v_object + 1) << SHADER_VIS_TRIANGLE_BITS) | uint(gl_PrimitiveID);
+#endif
 }

@@ -4,7 +4,10 @@
 # the issue sets as a target: the visibility buffer stores at most 8 bytes per sample, depth included,
 # at 1 and 4 samples; counted by common/gl/draw_count.c (the visibility pass's bytes written
 # over its samples that passed, from the formats bound when it drew), never typed in. Every other row
-# is measured or says why not; no time is checked. Exit 77 (no GL context) passes through as a skip.
+# is measured or says why not. The timing-only rows (chapter 16's visibility pass cut down, --vis-pass
+# no-primitive-id and depth-only) are timed, with no bytes and no error, and the section's last table
+# puts their first pass beside the compact G-buffer's and the visibility buffer's: a time in each
+# cell, none checked against another. Exit 77 (no GL context) passes through as a skip.
 set -u
 . "$(dirname "$0")/../lib/args.sh"
 args_expect 2 "$@"
@@ -36,6 +39,18 @@ NR == 1 {
 {
     if (NF != ncol) { printf "FAIL: row %d has %d fields, header %d\n", NR, NF, ncol; bad = 1 }
     if ($1 != "default") { printf "FAIL: row %d: scene %s (--quick: the default scene)\n", NR, $1; bad = 1 }
+    if ($3 ~ /^vis-/) {
+        # timing only: times, every byte and error column NA, the note that says so
+        key = $3 "/" $4
+        if ($3 != "vis-no-primitive-id" && $3 != "vis-depth-only") { printf "FAIL: timing row %s\n", key; bad = 1 }
+        if ($21 !~ /^timing only: /) { printf "FAIL: %s: note \"%s\"\n", key, $21; bad = 1 }
+        for (i = 9; i <= 14; i++) if ($i != "NA") { printf "FAIL: %s: column %d is %s, not NA\n", key, i, $i; bad = 1 }
+        for (i = 16; i <= 19; i++) if ($i != "NA") { printf "FAIL: %s: column %d is %s, not NA\n", key, i, $i; bad = 1 }
+        if (!($15 > 0)) { printf "FAIL: %s %s: ms %s\n", key, $5, $15; bad = 1 }
+        if ($5 == "visibility pass") timed_first[key] = 1
+        if ($5 == "total") { timing_totals++; if (!timed_first[key]) { printf "FAIL: %s has no visibility pass\n", key; bad = 1 } }
+        next
+    }
     if ($5 != "total") { passes[$3 "/" $4]++; next }
     totals++
     key = $3 "/" $4
@@ -61,9 +76,10 @@ END {
     # the light pre-pass has no 4-sample variant; every other renderer has both
     if (measured != 12) { printf "FAIL: %d rows measured, want 12\n", measured; bad = 1 }
     if (vis != 2) { printf "FAIL: %d visibility-buffer rows measured, want 2 (1 and 4 samples)\n", vis; bad = 1 }
+    if (timing_totals != 4) { printf "FAIL: %d timing-only rows, want 2 x 2 sample counts\n", timing_totals; bad = 1 }
     # the layouts differ by their normal target only: RGBA16F against 2 x 12 bits in RGBA8
     if (ref - compact != 4) { printf "FAIL: reference G-buffer %s B/sample, compact %s: want 4 apart\n", ref, compact; bad = 1 }
-    if (!bad) printf "ok: %d rows measured, the visibility buffer within 8 bytes per sample\n", measured
+    if (!bad) printf "ok: %d rows measured, the visibility buffer within 8 bytes per sample; %d timing-only rows\n", measured, timing_totals
     exit bad
 }' "$out/bench_storage.csv" || exit 1
 
@@ -76,6 +92,16 @@ done
 rows=$(awk '/^## What to store per pixel/ { s = 1 } s && /^### default/ { t = 1; next } /^#/ { t = 0 }
             t && /^\| [a-z]/ && !/^\| renderer/' "$out/bench.md" | wc -l)
 [ "$rows" -eq 14 ] || { echo "FAIL: the default scene's table has $rows rows, want 14"; exit 1; }
+# ... and its last part: the first passes side by side, one row per sample count, a time in each cell.
+times=$(awk '/^## / { s = ($0 == "## What to store per pixel") } s && /^### / { t = ($0 == "### What the visibility pass'"'"'s time is made of") }
+             s && t' "$out/bench.md")
+grep -q '^| scene | samples | compact G-buffer: geometry | visibility pass | without gl_PrimitiveID | depth only |$' <<<"$times" ||
+    { echo "FAIL: no table \"What the visibility pass's time is made of\" in the storage section"; exit 1; }
+for n in 1 4; do
+    grep -Eq "^\| default \| $n( \| [0-9]+\.[0-9]){4} \|$" <<<"$times" ||
+        { echo "FAIL: the timing table's default x$n row: $(grep "^| default | $n " <<<"$times")"; exit 1; }
+done
+[ "$(grep -Ec '^\| [a-z]+ \| [0-9]' <<<"$times")" -eq 2 ] || { echo "FAIL: the timing table has other rows: $times"; exit 1; }
 "$bench" --storage sometimes >/dev/null 2>&1; rc=$?
 [ "$rc" -eq 2 ] || { echo "FAIL: --storage sometimes gave exit $rc"; exit 1; }
 echo "ok: the storage table has its shape"

@@ -103,6 +103,29 @@ function(chapter_16_tests)
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(chapters.16_id_limits PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
 
+  # --vis-pass (docs/16_visibility_buffer.md, "What it costs"): full is the chapter's picture to the
+  # byte, at 1 and 4 samples; the two timing modes draw other pictures on purpose. no-primitive-id
+  # shades every pixel of an object as its first triangle: the lit picture and the ids view differ
+  # from full's. depth-only writes no id: its lit picture is its ids view, the background alone
+  # (were ids drawn, the one would be shaded and the other hashed colours). run_vis_pass.sh: every
+  # mode's --bench line, its warning, the pixels it shades (depth-only none), a bad mode (exit 2).
+  course_agreement_test(16_vis_pass_full 0 0 ${C} --vis-pass full VS ${C})
+  course_agreement_test(16_vis_pass_full_msaa4 0 0 ${C} --samples 4 --vis-pass full VS ${C} --samples 4)
+  course_agreement_test(16_vis_pass_no_primitive_id_differs 1 0.0001 ${C} --vis-pass no-primitive-id VS ${C})
+  course_agreement_test(16_vis_pass_no_primitive_id_ids_differ 1 0.0001 ${C} --view ids --vis-pass no-primitive-id
+                        VS ${C} --view ids)
+  set_tests_properties(agree.16_vis_pass_no_primitive_id_differs agree.16_vis_pass_no_primitive_id_ids_differ
+    PROPERTIES PASS_REGULAR_EXPRESSION "imgdiff: max=[1-9][0-9]+ .*-> FAIL")
+  course_agreement_test(16_vis_pass_depth_only_background 0 0 ${C} --vis-pass depth-only
+                        VS ${C} --vis-pass depth-only --view ids)
+  course_agreement_test(16_vis_pass_depth_only_background_msaa4 0 0 ${C} --samples 4 --vis-pass depth-only
+                        VS ${C} --samples 4 --vis-pass depth-only --view ids)
+  add_test(NAME chapters.16_vis_pass
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/chapters/run_vis_pass.sh $<TARGET_FILE:${C}>
+            ${COURSE_TEST_OUT}/16_vis_pass
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.16_vis_pass PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+
   # --bench names the three passes; with --samples 4 the fourth, the edges shaded per sample.
   add_test(NAME chapters.16_bench_passes_msaa
     COMMAND ${C} --headless --size 160x120 --frames 1 --warmup 0 --bench --samples 4

@@ -48,6 +48,18 @@ const storage_renderer bench_storage_renderers[STORAGE_RENDERERS] = {
      {{&chapter_16, ARGS("--renderer", "deferred")}, {&chapter_16, ARGS("--renderer", "deferred", "--samples", "4")}}},
 };
 
+/* What the visibility pass's time is made of: chapter 16's pass cut down (--vis-pass), timed beside
+ * the rows gbuffer-compact and visibility-buffer. no-primitive-id writes triangle 0 instead of
+ * gl_PrimitiveID, depth-only no id at all: wrong pictures by design, so no bytes and no error. */
+const storage_renderer bench_storage_timings[STORAGE_TIMINGS] = {
+    {"vis-no-primitive-id", "visibility pass",
+     {{&chapter_16, ARGS("--renderer", "deferred", "--vis-pass", "no-primitive-id")},
+      {&chapter_16, ARGS("--renderer", "deferred", "--vis-pass", "no-primitive-id", "--samples", "4")}}},
+    {"vis-depth-only", "visibility pass",
+     {{&chapter_16, ARGS("--renderer", "deferred", "--vis-pass", "depth-only")},
+      {&chapter_16, ARGS("--renderer", "deferred", "--vis-pass", "depth-only", "--samples", "4")}}},
+};
+
 const char *const bench_storage_scene_names[STORAGE_SCENES] = {"default", "city", "bunnies", "teapots"};
 const int bench_storage_samples[STORAGE_SAMPLE_COUNTS] = {1, 4};
 
@@ -93,7 +105,9 @@ void bench_storage_print_help(FILE *f)
                "                        and reference G-buffer, the light pre-pass and the visibility buffer at 1\n"
                "                        and 4 samples on the default, city, bunnies and teapots scenes (--quick:\n"
                "                        the default scene): bytes written and read per pixel (counted), each\n"
-               "                        pass's time, 8-bit error (DIR/bench_storage.csv, a section of bench.md);\n"
+               "                        pass's time, 8-bit error (DIR/bench_storage.csv, a section of bench.md),\n"
+               "                        and chapter 16's visibility pass timed without gl_PrimitiveID and with\n"
+               "                        depth only (--vis-pass, timing only);\n"
                "                        off; only: nothing else (--full: on; otherwise off). About 7 minutes at\n"
                "                        320x240 with 3 frames on 2 cores with llvmpipe: the bunnies' frames take\n"
                "                        seconds\n");
@@ -247,16 +261,18 @@ const storage_pass *bench_storage_find_pass(const storage_row *row, const char *
     return NULL;
 }
 
-/* Renderer ri at bench_storage_samples[k]: its chapter opened, timed, counted, compared, closed. A
- * chapter that refuses the scene (its limits) leaves a note; a GL failure stops the table. */
-static bool run_row(const bench_options *o, int si, int ri, int k, const gpu_scene *gs, bench_measure *m)
+/* Row sr at bench_storage_samples[k] into *row: its chapter opened, timed, counted, compared, closed;
+ * without m (a timing-only row) timed only. A chapter that refuses the scene (its limits) leaves a
+ * note; a GL failure stops the table. */
+static bool run_row(const bench_options *o, const storage_renderer *sr, int si, int k, const gpu_scene *gs,
+                    bench_measure *m, storage_row *row)
 {
-    const storage_renderer *sr = &bench_storage_renderers[ri];
     const storage_variant *v = &sr->at[k];
-    storage_row *row = &R.rows[si][ri][k];
     memset(row, 0, sizeof *row);
     row->renderer = sr->name;
     row->samples = bench_storage_samples[k];
+    if (!m)
+        snprintf(row->note, sizeof row->note, "timing only: a wrong picture by design; no bytes and no error");
     if (!v->chapter) {
         snprintf(row->note, sizeof row->note, "no %d-sample variant in the course", row->samples);
         return true;
@@ -268,11 +284,16 @@ static bool run_row(const bench_options *o, int si, int ri, int k, const gpu_sce
         gbuffer_set_default_layout(layout);
         return gl_check("bench_storage open");
     }
-    bool ok = time_row(e, o, gs, row) && count_row(e, gs, row) && error_row(e, m, row);
+    bool ok = time_row(e, o, gs, row) && (!m || (count_row(e, gs, row) && error_row(e, m, row)));
     app_embed_close(e);
     gbuffer_set_default_layout(layout);
     row->measured = ok;
-    if (ok)
+    const storage_pass *first = bench_storage_find_pass(row, sr->first);
+    if (ok && !m)
+        fprintf(stderr, "bench: storage %-8s %-19s x%d timing only: %s %9.2f ms, frame %9.2f ms\n",
+                bench_storage_scene_names[si], sr->name, row->samples, sr->first, first ? first->ms : NAN,
+                row->frame_ms);
+    else if (ok)
         fprintf(stderr, "bench: storage %-8s %-19s x%d %6.1f B/px written %7.1f B/px read %9.2f ms\n",
                 bench_storage_scene_names[si], sr->name, row->samples, row->written_per_px, row->read_per_px,
                 row->frame_ms);
@@ -299,7 +320,10 @@ static bool run_scene(const bench_options *o, int si, bench_renderers *br, bench
         ok = ok && make_reference4(&gs, o->width, o->height);
         for (int ri = 0; ok && ri < STORAGE_RENDERERS; ri++)
             for (int k = 0; ok && k < STORAGE_SAMPLE_COUNTS; k++)
-                ok = run_row(o, si, ri, k, &gs, m);
+                ok = run_row(o, &bench_storage_renderers[ri], si, k, &gs, m, &R.rows[si][ri][k]);
+        for (int ti = 0; ok && ti < STORAGE_TIMINGS; ti++)
+            for (int k = 0; ok && k < STORAGE_SAMPLE_COUNTS; k++)
+                ok = run_row(o, &bench_storage_timings[ti], si, k, &gs, NULL, &R.timings[si][ti][k]);
         gpu_scene_destroy(&gs);
     }
     scene_destroy(&sc);

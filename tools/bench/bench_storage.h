@@ -17,9 +17,12 @@
  *   error    8-bit, against the exact reference (bench_measure.h: forward, fp32, cut-off 0); at 4
  *            samples against chapter 13's forward MSAA at cut-off 0, the exact 4-sample picture
  * A renderer without a 4-sample variant gets a row that says so.
+ * Timed only, beside them: chapter 16's visibility pass cut down (--vis-pass no-primitive-id: triangle
+ * 0 instead of gl_PrimitiveID; depth-only: no id written), whose pictures are wrong by design: what
+ * the visibility pass's time is made of, against the compact G-buffer's geometry pass.
  * Targets printed: the visibility buffer writes at most 8 bytes per sample, depth included, at 1
  * and 4 samples; on the bunnies at 4 samples its first pass is at least 1.5x faster than the
- * compact G-buffer's geometry pass.
+ * compact G-buffer's geometry pass (and the same pass without gl_PrimitiveID against the target).
  *
  *   bench_storage_reset(on, quick)         the defaults: on under --full, off otherwise; quick: the
  *                                          default scene only
@@ -29,8 +32,11 @@
  *   bench_storage_enabled() / bench_storage_only()
  *   bench_storage_run(st, br, m)           the table (after the other sweeps)
  *   bench_storage_write_csv(st)            OUT/bench_storage.csv: one row per (scene, renderer,
- *                                          samples, pass) and one `total` row each
- *   bench_storage_write_md(f, st)          the "## What to store per pixel" section of bench.md
+ *                                          samples, pass) and one `total` row each; the timing-only
+ *                                          rows after a scene's renderers, bytes and error NA, their
+ *                                          note "timing only: ..."
+ *   bench_storage_write_md(f, st)          the "## What to store per pixel" section of bench.md, its
+ *                                          last part "### What the visibility pass's time is made of"
  *   bench_storage_print_help(f)            the option's --help lines
  */
 #ifndef TOOLS_BENCH_STORAGE_H

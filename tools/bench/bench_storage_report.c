@@ -47,10 +47,31 @@ static double stored_per_sample(const storage_row *r, int ri)
     return p && p->samples_per_px > 0 ? p->written_per_px / p->samples_per_px : NAN;
 }
 
+static double pass_ms(const storage_row *r, const char *pass)
+{
+    const storage_pass *p = r->measured ? bench_storage_find_pass(r, pass) : NULL;
+    return p ? p->ms : NAN;
+}
+
 static double first_pass_ms(const storage_row *r, int ri)
 {
-    const storage_pass *p = bench_storage_find_pass(r, bench_storage_renderers[ri].first);
-    return p ? p->ms : NAN;
+    return pass_ms(r, bench_storage_renderers[ri].first);
+}
+
+/* A timing-only row (bench_storage_timings): its passes' times and its frame's, bytes and error NA. */
+static void write_timing_csv(FILE *f, const bench_state *st, int si, const storage_row *r)
+{
+    const char *scene_name = bench_storage_scene_names[si];
+    for (int i = 0; r->measured && i < r->pass_count; i++) {
+        fprintf(f, "%s,%d,%s,%d,%s,%d,%d,%d,NA,NA,NA,NA,NA,NA", scene_name, R.scene_lights[si], r->renderer,
+                r->samples, r->passes[i].name, st->opt.width, st->opt.height, r->frames);
+        put(f, true, "%.3f", r->passes[i].ms);
+        fprintf(f, ",NA,NA,NA,NA,%s,%s\n", R.pass_clock, r->note);
+    }
+    fprintf(f, "%s,%d,%s,%d,total,%d,%d,%d,NA,NA,NA,NA,NA,NA", scene_name, R.scene_lights[si], r->renderer,
+            r->samples, st->opt.width, st->opt.height, r->frames);
+    put(f, r->measured, "%.3f", r->frame_ms);
+    fprintf(f, ",NA,NA,NA,NA,%s,%s\n", R.pass_clock, r->note);
 }
 
 bool bench_storage_write_csv(const bench_state *st)
@@ -95,6 +116,10 @@ bool bench_storage_write_csv(const bench_state *st)
                 put(f, e, "%.0f", (double)r->error8.over);
                 fprintf(f, ",%s,%s\n", R.pass_clock, r->note);
             }
+    for (int si = 0; si < bench_storage_scene_count(); si++)
+        for (int ti = 0; R.scene_done[si] && ti < STORAGE_TIMINGS; ti++)
+            for (int k = 0; k < STORAGE_SAMPLE_COUNTS; k++)
+                write_timing_csv(f, st, si, &R.timings[si][ti][k]);
     return bench_report_close_tmp(f, tmp, st->opt.out_dir, "bench_storage.csv");
 }
 
@@ -134,6 +159,59 @@ static void write_scene_table(FILE *f, int si)
         }
 }
 
+/* A time in a table cell, or a dash where the row was not measured. */
+static void put_ms_cell(FILE *f, double ms)
+{
+    if (isfinite(ms))
+        fprintf(f, " %.1f |", ms);
+    else
+        fprintf(f, " – |");
+}
+
+/* The first passes side by side, per scene and sample count: the compact G-buffer's geometry pass,
+ * the visibility pass, and the visibility pass cut down (timing-only rows, --vis-pass). */
+static void write_vis_timings(FILE *f)
+{
+    const int vis = renderer_index("visibility-buffer"), compact = renderer_index("gbuffer-compact");
+    fprintf(f, "\n### What the visibility pass's time is made of\n\n"
+               "The first pass's median ms, from the rows above (the compact G-buffer's geometry pass: chapter 11, "
+               "at 4 samples chapter 13; the visibility pass: chapter 16), beside chapter 16's visibility pass cut "
+               "down, timing only (its pictures are wrong by design: no bytes, no error): *without "
+               "gl_PrimitiveID* (`--vis-pass no-primitive-id`) writes the object's triangle 0 instead of "
+               "`gl_PrimitiveID`, *depth only* (`--vis-pass depth-only`) writes no id, depth alone. Each "
+               "is one more run of the chapter, after the table's rows.\n\n"
+               "| scene | samples | compact G-buffer: geometry | visibility pass | without gl_PrimitiveID | "
+               "depth only |\n|---|---|---|---|---|---|\n");
+    for (int si = 0; si < bench_storage_scene_count(); si++)
+        for (int k = 0; R.scene_done[si] && k < STORAGE_SAMPLE_COUNTS; k++) {
+            fprintf(f, "| %s | %d |", bench_storage_scene_names[si], bench_storage_samples[k]);
+            put_ms_cell(f, first_pass_ms(&R.rows[si][compact][k], compact));
+            put_ms_cell(f, first_pass_ms(&R.rows[si][vis][k], vis));
+            for (int ti = 0; ti < STORAGE_TIMINGS; ti++)
+                put_ms_cell(f, pass_ms(&R.timings[si][ti][k], bench_storage_timings[ti].first));
+            fputc('\n', f);
+        }
+}
+
+/* The bunnies' time target again without gl_PrimitiveID (the timing-only rows), and depth only. */
+static void write_timings_target(FILE *f, int bunnies, int k, const storage_row *g, int compact)
+{
+    const storage_row *no_id = &R.timings[bunnies][STORAGE_TIMING_NO_PRIMITIVE_ID][k],
+                      *depth = &R.timings[bunnies][STORAGE_TIMING_DEPTH_ONLY][k];
+    const char *first = bench_storage_timings[STORAGE_TIMING_NO_PRIMITIVE_ID].first;
+    const double ms = pass_ms(no_id, first), ratio = first_pass_ms(g, compact) / ms;
+    if (isfinite(ms))
+        fprintf(f, "; without gl_PrimitiveID (`--vis-pass no-primitive-id`, timing only) the pass takes %.1f ms, "
+                   "%.2fx faster than the compact geometry pass: %s",
+                ms, ratio, ratio >= TARGET_FIRST_PASS_SPEEDUP ? "met" : "NOT met");
+    else
+        fprintf(f, "; without gl_PrimitiveID: not measured (%s)", no_id->note);
+    const double depth_ms = pass_ms(depth, bench_storage_timings[STORAGE_TIMING_DEPTH_ONLY].first);
+    if (isfinite(depth_ms))
+        fprintf(f, "; depth only %.1f ms", depth_ms);
+    fputc('\n', f);
+}
+
 /* The two targets, from the rows measured; "not measured" with the reason otherwise. */
 static void write_targets(FILE *f)
 {
@@ -163,9 +241,10 @@ static void write_targets(FILE *f)
     if (bunnies < bench_storage_scene_count() && R.scene_done[bunnies] && v->measured && g->measured) {
         double ratio = first_pass_ms(g, compact) / first_pass_ms(v, vis);
         fprintf(f, "- on the bunnies at 4 samples, the visibility pass at least %.1fx faster than the compact "
-                   "G-buffer's geometry pass: %.1f ms against %.1f ms, %.2fx: %s\n",
+                   "G-buffer's geometry pass: %.1f ms against %.1f ms, %.2fx: %s",
                 TARGET_FIRST_PASS_SPEEDUP, first_pass_ms(v, vis), first_pass_ms(g, compact), ratio,
                 ratio >= TARGET_FIRST_PASS_SPEEDUP ? "met" : "NOT met");
+        write_timings_target(f, bunnies, k4, g, compact);
     } else {
         fprintf(f, "- on the bunnies at 4 samples, the visibility pass at least %.1fx faster than the compact "
                    "G-buffer's geometry pass: not measured (%s)\n",
@@ -205,5 +284,6 @@ void bench_storage_write_md(FILE *f, const bench_state *st)
     for (int si = 0; si < bench_storage_scene_count(); si++)
         if (R.scene_done[si])
             write_scene_table(f, si);
+    write_vis_timings(f);
     fprintf(f, "\n");
 }

@@ -1,6 +1,7 @@
 /* bench_storage_rows.h - what the storage table measured (bench_storage.c fills it) and its report
- * reads (bench_storage_report.c): one row per scene, renderer and sample count. Internal to the
- * benchmark.
+ * reads (bench_storage_report.c): one row per scene, renderer and sample count, and the timing-only
+ * rows (chapter 16's visibility pass cut down, --vis-pass) per scene and sample count. Internal to
+ * the benchmark.
  */
 #ifndef TOOLS_BENCH_STORAGE_ROWS_H
 #define TOOLS_BENCH_STORAGE_ROWS_H
@@ -9,6 +10,8 @@
 #include "image.h"
 
 #define STORAGE_RENDERERS 7
+#define STORAGE_TIMINGS 2 /* timing-only rows: no bytes, no error (their pictures are wrong by design) */
+enum { STORAGE_TIMING_NO_PRIMITIVE_ID, STORAGE_TIMING_DEPTH_ONLY }; /* bench_storage_timings' order */
 #define STORAGE_SCENES 4
 #define STORAGE_SAMPLE_COUNTS 2
 #define STORAGE_MAX_PASSES 10
@@ -50,6 +53,7 @@ typedef struct storage_row {
 
 typedef struct bench_storage_results {
     storage_row rows[STORAGE_SCENES][STORAGE_RENDERERS][STORAGE_SAMPLE_COUNTS];
+    storage_row timings[STORAGE_SCENES][STORAGE_TIMINGS][STORAGE_SAMPLE_COUNTS]; /* timed only */
     bool scene_done[STORAGE_SCENES];
     int scene_lights[STORAGE_SCENES];
     const char *pass_clock;
@@ -58,6 +62,7 @@ typedef struct bench_storage_results {
 
 extern bench_storage_results bench_storage_results_now;
 extern const storage_renderer bench_storage_renderers[STORAGE_RENDERERS];
+extern const storage_renderer bench_storage_timings[STORAGE_TIMINGS];
 extern const char *const bench_storage_scene_names[STORAGE_SCENES];
 extern const int bench_storage_samples[STORAGE_SAMPLE_COUNTS];
 extern const int bench_storage_vis_scene_bytes;
