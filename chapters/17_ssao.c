@@ -1,7 +1,10 @@
 /* 17_ssao.c - screen-space ambient occlusion (Mittring 2007): how much of the sky above each pixel's
  * surface its neighbours hide, guessed from the depth buffer alone, scaling the ambient term. Compare
  * with chapter 11, whose clustered deferred frame this chapter runs unchanged around two new passes:
- * with the occlusion off (--ssao off, key O) the picture is chapter 11's to the byte.
+ * with the occlusion off (--ssao off, key O) the picture is chapter 11's to the byte (with its
+ * --gbuffer reversed-z: this chapter's G-buffer is the compact layout with a reversed depth unless
+ * asked otherwise, gbuffer_layout_for_chapter; from standard depth, positions rebuilt far away are
+ * 1e-4 off and a few pixels fall across a light's hard cut-off from forward's: docs/17_ssao.md).
  *
  * Taken over: chapter 11's G-buffer pass, light lists and shading pass (chapter_11_*), built with
  * AMBIENT_OCCLUSION (shade_ambient() in shaders/shading.glsl then reads the occlusion); chapter 00's
@@ -172,6 +175,7 @@ static void cleanup(app *a)
 }
 
 const app_desc chapter_17 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                             .key = key, .draw_forward = draw_forward, .takes_reversed_z = true};
+                             .key = key, .draw_forward = draw_forward, .takes_reversed_z = true,
+                             .prefers_reversed_z = true};
 
 CHAPTER_MAIN(chapter_17)

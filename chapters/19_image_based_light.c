@@ -2,7 +2,8 @@
  * around it into a cube map at start, and the surfaces near it take their ambient light from that
  * picture (diffuse from its irradiance, specular from its prefiltered mip chain) instead of one
  * constant colour. Compare with chapter 11, whose clustered deferred frame this chapter runs
- * unchanged: with the probes off (--ibl off, key I) the picture is chapter 11's to the byte.
+ * unchanged: with the probes off (--ibl off, key I) the picture is chapter 11's to the byte (with its
+ * --gbuffer reversed-z, this chapter's default on scenes without metallic-roughness: chapter 17's).
  *
  * Taken over: chapter 11's G-buffer pass, light lists and shading pass (chapter_11_*), built with
  * IMAGE_BASED_LIGHT (shade_ambient_at() in shaders/shading.glsl then reads the probes,
@@ -267,6 +268,7 @@ static void cleanup(app *a)
 long chapter_19_probe_bytes(void) { return ibl_probes_bytes(&state.probes); }
 
 const app_desc chapter_19 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                             .key = key, .draw_forward = draw_forward, .takes_reversed_z = true};
+                             .key = key, .draw_forward = draw_forward, .takes_reversed_z = true,
+                             .prefers_reversed_z = true};
 
 CHAPTER_MAIN(chapter_19)

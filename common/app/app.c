@@ -358,8 +358,9 @@ static int app_setup(app *a, const app_desc *desc)
     /* --gbuffer: the layout of every G-buffer made from here on, the chapter's included; a reversed-Z
      * layout only where the chapter's lighting pass (its pass state, set by init) can take it. */
     const gbuffer_layout *asked = a->options->gbuffer ? gbuffer_layout_find(a->options->gbuffer) : NULL;
-    /* A scene with metallic-roughness materials needs a layout that holds them (reference). */
-    const gbuffer_layout *layout = gbuffer_layout_for_scene(asked, &a->scene);
+    /* A scene with metallic-roughness materials needs a layout that holds them; 17 and 19 prefer
+     * reversed-Z (gbuffer_layout_for_chapter). */
+    const gbuffer_layout *layout = gbuffer_layout_for_chapter(asked, &a->scene, desc->prefers_reversed_z);
     if (!layout || !gbuffer_set_default_layout(layout))
         return EXIT_CODE_USAGE;
     /* A scene with emissive materials: every G-buffer gets RT2 for it (common/render/gbuffer.h). */

@@ -94,6 +94,8 @@ typedef struct app_desc {
     bool takes_reversed_z; /* its lighting passes read the G-buffer's depth through gbuffer_read.glsl only,
                             * never depth-tested (11, 17, 19): --gbuffer reversed-z is accepted though it
                             * sets a pass state (gbuffer_layout_fits_pass) */
+    bool prefers_reversed_z; /* with no --gbuffer, the compact layout with its depth reversed on scenes
+                              * without metallic-roughness materials (17, 19: gbuffer_layout_for_chapter) */
 } app_desc;
 
 int app_run(const app_desc *desc, int argc, char **argv);

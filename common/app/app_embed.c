@@ -101,7 +101,7 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
         /* --gbuffer as the runner takes it; a scene with metallic-roughness materials is drawn with a
          * layout that holds them. The layout before is restored on close. */
         const gbuffer_layout *asked = e->opt.gbuffer ? gbuffer_layout_find(e->opt.gbuffer) : NULL;
-        const gbuffer_layout *layout = gbuffer_layout_for_scene(asked, gs->src);
+        const gbuffer_layout *layout = gbuffer_layout_for_chapter(asked, gs->src, desc->prefers_reversed_z);
         ok = layout != NULL;
         /* An emissive scene's G-buffers get RT2; restored on close, as the layout is. */
         gbuffer_set_default_emissive(gbuffer_scene_emits(gs->src));

@@ -149,11 +149,17 @@ bool gbuffer_layout_holds_pbr(const gbuffer_layout *layout)
            layout->normal_encoding == SHADER_GBUFFER_NORMAL_SHORTS;
 }
 
-const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, const scene *s)
+static bool scene_has_pbr(const scene *s)
 {
     bool pbr = false;
     for (int i = 0; i < s->material_count; i++)
         pbr = pbr || s->materials[i].pbr;
+    return pbr;
+}
+
+const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, const scene *s)
+{
+    const bool pbr = scene_has_pbr(s);
     if (!pbr)
         return layout ? layout : default_layout;
     if (!layout)
@@ -169,6 +175,16 @@ const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, con
               "docs/18_pbr_materials.md); layouts that can: %s",
               gbuffer_layout_name(layout), holds);
     return NULL;
+}
+
+/* The compact layout with its depth reversed: the same 12 bytes, and the precision a position rebuilt
+ * from depth needs where a light's hard cut-off crosses a surface (docs/17_ssao.md). */
+const gbuffer_layout *gbuffer_layout_for_chapter(const gbuffer_layout *layout, const scene *s, bool prefers_reversed_z)
+{
+    if (!layout && prefers_reversed_z && default_layout == &gbuffer_layouts[GBUFFER_LAYOUT_COMPACT] &&
+        !scene_has_pbr(s) && have_clip_control())
+        return &gbuffer_layouts[GBUFFER_LAYOUT_REVERSED_Z];
+    return gbuffer_layout_for_scene(layout, s);
 }
 
 bool gbuffer_layout_fits_pass(const gbuffer_layout *layout, const gl_pass_state *pass)
@@ -229,21 +245,40 @@ static void set_clip_control(bool reversed)
     glClipControl(GL_LOWER_LEFT, reversed ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
 }
 
-void gbuffer_depth_test_begin(const gbuffer *g, const gpu_scene *gs, gpu_scene *view, gl_pass_state *state)
+void gbuffer_layout_depth_begin(const gbuffer_layout *layout, const gpu_scene *gs, gpu_scene *view,
+                                gl_pass_state *state)
 {
     *view = *gs;
-    if (!is_reversed(g->desc.layout))
+    if (!is_reversed(layout))
         return;
     reversed_view_proj(&gs->view, view->view.view_proj);
     state->depth_func = mirror_depth_func(state->depth_func);
     set_clip_control(true);
 }
 
-void gbuffer_depth_test_end(const gbuffer *g)
+void gbuffer_layout_depth_end(const gbuffer_layout *layout)
 {
-    if (is_reversed(g->desc.layout))
+    if (is_reversed(layout))
         set_clip_control(false);
 }
+
+void gbuffer_layout_inv_view_proj(const gbuffer_layout *layout, const gpu_scene *gs, mat4 out)
+{
+    if (!is_reversed(layout)) {
+        glm_mat4_copy((vec4 *)gs->view.inv_view_proj, out);
+        return;
+    }
+    mat4 vp;
+    reversed_view_proj(&gs->view, vp);
+    invert_to_float((const float *)vp, out);
+}
+
+void gbuffer_depth_test_begin(const gbuffer *g, const gpu_scene *gs, gpu_scene *view, gl_pass_state *state)
+{
+    gbuffer_layout_depth_begin(g->desc.layout, gs, view, state);
+}
+
+void gbuffer_depth_test_end(const gbuffer *g) { gbuffer_layout_depth_end(g->desc.layout); }
 
 /* ---- the G-buffer ------------------------------------------------------------------------------ */
 
@@ -397,14 +432,9 @@ void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program
         glUniform1i(glGetUniformLocation(program, names[i]), first_unit + i);
     }
     glActiveTexture(GL_TEXTURE0);
-    mat4 inv_reversed;
-    if (reversed) {
-        mat4 vp;
-        reversed_view_proj(&gs->view, vp);
-        invert_to_float((const float *)vp, inv_reversed);
-    }
-    glUniformMatrix4fv(glGetUniformLocation(program, "u_inv_view_proj"), 1, GL_FALSE,
-                       reversed ? (const float *)inv_reversed : (const float *)gs->view.inv_view_proj);
+    mat4 inv;
+    gbuffer_layout_inv_view_proj(g->desc.layout, gs, inv);
+    glUniformMatrix4fv(glGetUniformLocation(program, "u_inv_view_proj"), 1, GL_FALSE, (const float *)inv);
     /* RT2 on its own unit, bound or not: a sampler left on unit 0 would meet the lights' buffer there. */
     glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_GBUFFER_EMISSIVE);
     glBindTexture(target, g->desc.emissive ? g->fbo.color[2] : 0);

@@ -55,6 +55,11 @@
  *                                        for a scene with metallic-roughness materials and no layout
  *                                        asked for, oct16; NULL, logged, when the one asked for
  *                                        cannot hold them
+ *   gbuffer_layout_for_chapter(layout, s, prefers_reversed_z)
+ *                                        as gbuffer_layout_for_scene; with nothing asked, a chapter
+ *                                        that prefers reversed-Z (17, 19) gets reversed-z where the
+ *                                        default is compact, the scene has no metallic-roughness
+ *                                        material and the context has glClipControl
  *   gbuffer_layout_fits_pass(layout, pass)
  *                                        false, with one line logged, for a reversed-Z layout and a
  *                                        lighting pass written for standard depth (see below)
@@ -65,6 +70,12 @@
  *                                        put the reversed projection in view->view.view_proj (view is
  *                                        a copy of gs) and mirror state->depth_func (GREATER <-> LESS,
  *                                        GEQUAL <-> LEQUAL); with the others they only copy
+ *   gbuffer_layout_depth_begin(layout, gs, view, state)
+ *   gbuffer_layout_depth_end(layout)     the same for a target of the layout's depth that is not a
+ *                                        G-buffer (chapter 17's depth-normal pre-pass)
+ *   gbuffer_layout_inv_view_proj(layout, gs, out)
+ *                                        the matrix that rebuilds a position from the layout's depth
+ *                                        (reversed: the inverse of the reversed projection, in double)
  *
  * Layouts (gbuffer_layouts[]; docs/02_mrt_gbuffer.md has what each loses, measured):
  *   RT0  albedo.rgb: GL_SRGB8_ALPHA8 (sRGB-encoded: 8 bits spent where the eye sees them) or
@@ -197,8 +208,14 @@ bool gbuffer_set_default_layout(const gbuffer_layout *layout);
 const gbuffer_layout *gbuffer_default_layout(void);
 bool gbuffer_layout_holds_pbr(const gbuffer_layout *layout);
 const gbuffer_layout *gbuffer_layout_for_scene(const gbuffer_layout *layout, const scene *s);
+const gbuffer_layout *gbuffer_layout_for_chapter(const gbuffer_layout *layout, const scene *s,
+                                                 bool prefers_reversed_z);
 bool gbuffer_layout_fits_pass(const gbuffer_layout *layout, const gl_pass_state *pass);
 
+void gbuffer_layout_depth_begin(const gbuffer_layout *layout, const gpu_scene *gs, gpu_scene *view,
+                                gl_pass_state *state);
+void gbuffer_layout_depth_end(const gbuffer_layout *layout);
+void gbuffer_layout_inv_view_proj(const gbuffer_layout *layout, const gpu_scene *gs, mat4 out);
 void gbuffer_depth_test_begin(const gbuffer *g, const gpu_scene *gs, gpu_scene *view, gl_pass_state *state);
 void gbuffer_depth_test_end(const gbuffer *g);
 
