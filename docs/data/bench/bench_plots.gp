@@ -2,541 +2,541 @@
 set terminal pngcairo size 1500,900 font ',10'
 set datafile missing 'NA'
 $t_0_0 << EOD
-1 8.3228 1
-4 14.5218 1
-16 39.1116 1
-64 137.6136 1
-256 531.2925 1
-1024 2106.0079 0
-4096 8404.8698 0
+1 25.6305 1
+4 43.8635 1
+16 118.0137 1
+64 420.2858 1
+256 1629.3742 0
+1024 6465.7280 0
+4096 25811.1430 0
 EOD
 $t_0_1 << EOD
-1 8.2163 1
-4 13.7839 1
-16 32.1447 1
-64 96.7516 1
-256 353.3953 1
-1024 1400.9544 1
-4096 5591.1907 0
+1 28.4530 1
+4 46.5901 1
+16 98.6122 1
+64 290.9371 1
+256 949.0297 1
+1024 3581.4004 0
+4096 14110.8831 0
 EOD
 $t_0_2 << EOD
-1 12.8076 1
-4 18.0934 1
-16 22.3737 1
-64 22.5169 1
-256 20.0184 1
-1024 22.1556 1
-4096 31.6516 1
+1 39.3299 1
+4 60.8330 1
+16 78.1152 1
+64 69.2382 1
+256 51.2765 1
+1024 55.8867 1
+4096 80.0112 1
 EOD
 $t_0_3 << EOD
-1 17.0202 1
-4 22.0330 1
-16 40.3261 1
-64 112.8020 1
-256 400.9519 1
-1024 1553.5513 0
-4096 6163.9492 0
+1 51.4217 1
+4 70.5900 1
+16 129.2905 1
+64 336.3896 1
+256 1024.1428 1
+1024 3775.1556 0
+4096 14779.2069 0
 EOD
 $t_0_4 << EOD
-1 19.2133 1
-4 37.1524 1
-16 52.8070 1
-64 49.9464 1
-256 45.7091 1
-1024 62.2356 1
-4096 119.2197 1
+1 63.6220 1
+4 108.9934 1
+16 143.3026 1
+64 123.9515 1
+256 91.5492 1
+1024 118.1656 1
+4096 259.0758 1
 EOD
 $t_0_5 << EOD
-1 18.9829 1
-4 37.2099 1
-16 52.7842 1
-64 49.8447 1
-256 45.8747 1
-1024 62.8434 1
-4096 119.2096 1
+1 62.5808 1
+4 104.5373 1
+16 131.9775 1
+64 114.8137 1
+256 91.3147 1
+1024 125.4246 1
+4096 251.1598 1
 EOD
 $t_0_6 << EOD
-1 24.5801 1
-4 43.7538 1
-16 61.2062 1
-64 73.0346 1
-256 74.9752 1
-1024 118.7259 1
-4096 245.3581 1
+1 68.0933 1
+4 118.8454 1
+16 141.8383 1
+64 160.4762 1
+256 138.5378 1
+1024 237.0917 1
+4096 534.9159 1
 EOD
 $t_0_7 << EOD
-1 46.1305 1
-4 50.3651 1
-16 52.4336 1
-64 50.9368 1
-256 49.0097 1
-1024 53.3699 1
-4096 64.4605 1
+1 122.2167 1
+4 144.0542 1
+16 144.0494 1
+64 137.6207 1
+256 117.8446 1
+1024 134.0407 1
+4096 151.2045 1
 EOD
 $t_0_8 << EOD
-1 23.2693 1
-4 28.4130 1
-16 32.4763 1
-64 32.9103 1
-256 30.3669 1
-1024 32.9900 1
-4096 40.8241 1
+1 69.4974 1
+4 91.6882 1
+16 99.0271 1
+64 94.2009 1
+256 75.4902 1
+1024 88.5441 1
+4096 103.1113 1
 EOD
 $t_1_0 << EOD
-1 30.4550 1
-4 51.4661 1
-16 136.0409 1
-64 475.5983 1
-256 1833.8277 0
-1024 7266.7454 0
-4096 28998.4162 0
+1 85.7071 1
+4 153.9239 1
+16 336.1725 1
+64 1291.5196 1
+256 5112.9081 0
+1024 20398.4622 0
+4096 81540.6784 0
 EOD
 $t_1_1 << EOD
-1 24.5779 1
-4 35.0988 1
-16 53.7208 1
-64 110.9000 1
-256 295.9837 1
-1024 1046.5338 1
-4096 4048.7346 0
+1 70.1964 1
+4 110.4678 1
+16 155.7493 1
+64 303.0676 1
+256 955.2829 1
+1024 3564.1442 0
+4096 13999.5893 0
 EOD
 $t_1_2 << EOD
-1 31.6078 1
-4 42.7262 1
-16 52.5018 1
-64 64.0800 1
-256 59.3844 1
-1024 60.3284 1
-4096 65.9304 1
+1 90.1373 1
+4 130.4965 1
+16 145.2856 1
+64 167.2319 1
+256 174.5573 1
+1024 167.9196 1
+4096 185.9121 1
 EOD
 $t_1_3 << EOD
-1 29.9038 1
-4 35.8093 1
-16 59.8993 1
-64 161.1321 1
-256 548.2192 1
-1024 2096.5676 0
-4096 8289.9614 0
+1 85.8507 1
+4 101.4674 1
+16 148.2154 1
+64 438.2505 1
+256 1598.3912 0
+1024 6238.9537 0
+4096 24801.2039 0
 EOD
 $t_1_4 << EOD
-1 33.6898 1
-4 55.1555 1
-16 75.2266 1
-64 94.3067 1
-256 81.4723 1
-1024 94.2168 1
-4096 116.5748 1
+1 97.3264 1
+4 146.0219 1
+16 147.9210 1
+64 204.4161 1
+256 202.2538 1
+1024 205.6624 1
+4096 228.0281 1
 EOD
 $t_1_5 << EOD
-1 33.6444 1
-4 55.0782 1
-16 75.2182 1
-64 89.4996 1
-256 81.2421 1
-1024 92.9446 1
-4096 117.4739 1
+1 99.9833 1
+4 141.6766 1
+16 150.0491 1
+64 209.7718 1
+256 176.3848 1
+1024 206.5278 1
+4096 242.3261 1
 EOD
 $t_1_6 << EOD
-1 36.2074 1
-4 62.0164 1
-16 88.0786 1
-64 121.4297 1
-256 107.9357 1
-1024 149.2221 1
-4096 206.9116 1
+1 106.4898 1
+4 145.9912 1
+16 181.3783 1
+64 210.7295 1
+256 247.0760 1
+1024 314.4664 1
+4096 409.6659 1
 EOD
 $t_1_7 << EOD
-1 57.9726 1
-4 63.4730 1
-16 68.3161 1
-64 74.9773 1
-256 72.4270 1
-1024 77.4137 1
-4096 89.8204 1
+1 157.7590 1
+4 180.2856 1
+16 174.4779 1
+64 189.8109 1
+256 204.5118 1
+1024 200.7543 1
+4096 210.2791 1
 EOD
 $t_1_8 << EOD
-1 35.4009 1
-4 42.3704 1
-16 47.8833 1
-64 52.4106 1
-256 52.2839 1
-1024 55.8515 1
-4096 59.7197 1
+1 99.1500 1
+4 111.9721 1
+16 115.9745 1
+64 150.2836 1
+256 155.0098 1
+1024 152.3916 1
+4096 145.0577 1
 EOD
 $t_2_0 << EOD
-1 409.8186 1
-4 504.0052 1
-16 543.5169 1
-64 1003.2694 1
-256 2842.2797 0
-1024 10198.3207 0
-4096 39622.4848 0
+1 1129.2505 1
+4 1031.1581 1
+16 1277.0829 1
+64 2260.7818 0
+256 6195.5777 0
+1024 21934.7610 0
+4096 84891.4945 0
 EOD
 $t_2_1 << EOD
-1 710.0632 1
-4 748.9556 1
-16 699.4286 1
-64 694.8023 1
-256 720.1168 1
-1024 816.9482 1
-4096 1098.2380 1
+1 1951.3718 1
+4 1951.3718 0
+16 1951.3718 0
+64 1951.3718 0
+256 1951.3718 0
+1024 1951.3718 0
+4096 1951.3718 0
 EOD
 $t_2_2 << EOD
-1 710.6410 1
-4 759.1661 1
-16 700.5649 1
-64 713.8095 1
-256 704.9751 1
-1024 723.4620 1
-4096 784.3780 1
+1 1953.9262 1
+4 1953.9262 0
+16 1953.9262 0
+64 1953.9262 0
+256 1953.9262 0
+1024 1953.9262 0
+4096 1953.9262 0
 EOD
 $t_2_3 << EOD
-1 397.6618 1
-4 470.0497 1
-16 392.9919 1
-64 431.3594 1
-256 615.6674 1
-1024 1274.3235 1
-4096 3908.9476 0
+1 1011.5727 1
+4 981.7388 1
+16 766.6549 1
+64 1290.2322 1
+256 3384.5414 0
+1024 11761.7781 0
+4096 45270.7251 0
 EOD
 $t_2_4 << EOD
-1 405.0298 1
-4 442.8514 1
-16 394.8595 1
-64 384.7130 1
-256 430.0763 1
-1024 439.3716 1
-4096 560.7876 1
+1 965.4866 1
+4 932.1220 1
+16 792.8479 1
+64 911.4920 1
+256 1063.3478 1
+1024 1670.7713 0
+4096 4100.4650 0
 EOD
 $t_2_5 << EOD
-1 386.7152 1
-4 406.6473 1
-16 388.7877 1
-64 409.5993 1
-256 396.0546 1
-1024 422.9958 1
-4096 558.9120 1
+1 968.6078 1
+4 938.0485 1
+16 767.7748 1
+64 961.6684 1
+256 1737.2432 0
+1024 4839.5420 0
+4096 17248.7373 0
 EOD
 $t_2_6 << EOD
-1 392.7818 1
-4 445.0049 1
-16 382.5410 1
-64 403.6676 1
-256 414.9887 1
-1024 460.6650 1
-4096 637.8892 1
+1 1001.5672 1
+4 958.4877 1
+16 962.0053 1
+64 1051.2725 1
+256 976.6451 1
+1024 1125.3109 1
+4096 1719.9739 0
 EOD
 $t_2_7 << EOD
-1 409.9584 1
-4 466.3448 1
-16 400.9521 1
-64 421.3636 1
-256 422.2431 1
-1024 426.5124 1
-4096 451.7939 1
+1 1058.3403 1
+4 1065.1264 1
+16 1002.0525 1
+64 1157.2147 1
+256 1777.8631 0
+1024 4260.4571 0
+4096 14190.8330 0
 EOD
 $t_2_8 << EOD
-1 389.1437 1
-4 484.2355 1
-16 377.8803 1
-64 380.2343 1
-256 379.7758 1
-1024 422.0619 1
-4096 418.3489 1
+1 1013.1297 1
+4 905.6367 1
+16 869.1658 1
+64 1073.9197 1
+256 1892.9352 0
+1024 5168.9973 0
+4096 18273.2455 0
 EOD
 $t_3_0 << EOD
-1 8.7558 1
-4 14.0321 1
-16 36.1160 1
-64 121.0387 1
-256 461.3755 1
-1024 1822.7224 0
-4096 7268.1100 0
+1 22.4120 1
+4 41.5473 1
+16 96.7578 1
+64 324.0058 1
+256 1418.4065 1
+1024 5796.0091 0
+4096 23306.4194 0
 EOD
 $t_3_1 << EOD
-1 10.4797 1
-4 15.9006 1
-16 38.5076 1
-64 80.4839 1
-256 209.4232 1
-1024 751.8440 1
-4096 2921.5272 0
+1 26.9372 1
+4 47.5564 1
+16 99.7972 1
+64 196.0674 1
+256 611.5712 1
+1024 2273.5865 0
+4096 8921.6475 0
 EOD
 $t_3_2 << EOD
-1 14.2672 1
-4 18.9204 1
-16 20.8823 1
-64 20.6850 1
-256 20.9958 1
-1024 35.3383 1
-4096 107.5296 1
+1 39.0967 1
+4 56.3122 1
+16 46.0278 1
+64 47.9687 1
+256 48.9918 1
+1024 91.2328 1
+4096 313.4226 1
 EOD
 $t_3_3 << EOD
-1 17.6766 1
-4 20.3733 1
-16 35.0365 1
-64 76.5937 1
-256 244.0968 1
-1024 909.5632 1
-4096 3571.4289 0
+1 48.9247 1
+4 59.3853 1
+16 81.3044 1
+64 187.8650 1
+256 781.4661 1
+1024 3155.8708 0
+4096 12653.4893 0
 EOD
 $t_3_4 << EOD
-1 18.1840 1
-4 28.8228 1
-16 36.4866 1
-64 41.4376 1
-256 54.6252 1
-1024 146.6423 1
-4096 531.0945 1
+1 51.5373 1
+4 78.5839 1
+16 73.8426 1
+64 69.7281 1
+256 110.9098 1
+1024 267.2118 1
+4096 1157.1626 1
 EOD
 $t_3_5 << EOD
-1 18.1028 1
-4 28.5517 1
-16 36.5770 1
-64 42.1180 1
-256 54.9742 1
-1024 145.9096 1
-4096 533.4648 1
+1 55.7997 1
+4 79.3106 1
+16 75.2217 1
+64 70.2737 1
+256 111.0088 1
+1024 264.8917 1
+4096 1165.7838 1
 EOD
 $t_3_6 << EOD
-1 21.9836 1
-4 34.6311 1
-16 44.5381 1
-64 49.5939 1
-256 66.0812 1
-1024 155.1645 1
-4096 558.8853 1
+1 59.6665 1
+4 87.9070 1
+16 83.1976 1
+64 78.0571 1
+256 118.4693 1
+1024 262.6678 1
+4096 1134.2590 1
 EOD
 $t_3_7 << EOD
-1 48.3455 1
-4 47.2205 1
-16 49.7835 1
-64 49.4566 1
-256 50.0264 1
-1024 55.1824 1
-4096 87.8109 1
+1 116.0904 1
+4 123.7354 1
+16 118.8154 1
+64 111.0392 1
+256 125.3358 1
+1024 129.0207 1
+4096 213.3046 1
 EOD
 $t_3_8 << EOD
-1 23.4774 1
-4 27.3226 1
-16 29.3629 1
-64 29.2673 1
-256 30.0019 1
-1024 37.2114 1
-4096 83.1434 1
+1 61.6585 1
+4 74.9622 1
+16 66.6149 1
+64 64.2807 1
+256 69.9992 1
+1024 93.0178 1
+4096 220.9256 1
 EOD
 $t_4_0 << EOD
-1 39.1978 1
-4 54.3137 1
-16 116.4316 1
-64 363.1547 1
-256 1352.2131 1
-1024 5308.4465 0
-4096 21133.3802 0
+1 100.8658 1
+4 133.4604 1
+16 294.5803 1
+64 1074.4020 1
+256 4193.6887 0
+1024 16670.8357 0
+4096 66579.4235 0
 EOD
 $t_4_1 << EOD
-1 60.9363 1
-4 66.6185 1
-16 103.2849 1
-64 214.0901 1
-256 653.0216 1
-1024 2408.7472 0
-4096 9431.6499 0
+1 129.7481 1
+4 161.8098 1
+16 235.0942 1
+64 662.2041 1
+256 2370.6437 0
+1024 9204.4019 0
+4096 36539.4347 0
 EOD
 $t_4_2 << EOD
-1 68.2411 1
-4 78.8914 1
-16 93.7914 1
-64 98.4323 1
-256 102.6138 1
-1024 101.4652 1
-4096 101.7892 1
+1 158.1469 1
+4 207.2089 1
+16 229.1360 1
+64 263.1350 1
+256 254.4152 1
+1024 280.1308 1
+4096 287.3413 1
 EOD
 $t_4_3 << EOD
-1 48.8165 1
-4 49.4903 1
-16 79.6223 1
-64 197.0514 1
-256 671.2170 1
-1024 2567.8793 0
-4096 10154.5286 0
+1 114.8535 1
+4 109.8021 1
+16 213.2209 1
+64 558.7931 1
+256 1941.0819 0
+1024 7470.2373 0
+4096 29586.8588 0
 EOD
 $t_4_4 << EOD
-1 55.0300 1
-4 75.7500 1
-16 114.6987 1
-64 124.9827 1
-256 127.9114 1
-1024 109.1109 1
-4096 100.6263 1
+1 125.6391 1
+4 163.4255 1
+16 235.0528 1
+64 317.8136 1
+256 253.6782 1
+1024 261.4065 1
+4096 222.6625 1
 EOD
 $t_4_5 << EOD
-1 55.2214 1
-4 75.4203 1
-16 113.7530 1
-64 125.2160 1
-256 126.8636 1
-1024 108.9392 1
-4096 101.0056 1
+1 122.9084 1
+4 160.5006 1
+16 219.9346 1
+64 339.2987 1
+256 266.3883 1
+1024 256.2114 1
+4096 231.8195 1
 EOD
 $t_4_6 << EOD
-1 65.7751 1
-4 84.8890 1
-16 121.1558 1
-64 133.0052 1
-256 142.3310 1
-1024 135.9815 1
-4096 163.5391 1
+1 130.3937 1
+4 165.3089 1
+16 216.7898 1
+64 334.3339 1
+256 262.8109 1
+1024 304.8628 1
+4096 295.4477 1
 EOD
 $t_4_7 << EOD
-1 75.0179 1
-4 85.6605 1
-16 86.6446 1
-64 88.0603 1
-256 91.9901 1
-1024 90.3896 1
-4096 97.6793 1
+1 186.9387 1
+4 193.4027 1
+16 184.9416 1
+64 254.3264 1
+256 214.9735 1
+1024 249.7676 1
+4096 214.1584 1
 EOD
 $t_4_8 << EOD
-1 53.3235 1
-4 59.6200 1
-16 71.9721 1
-64 77.1472 1
-256 76.4398 1
-1024 74.4161 1
-4096 74.5285 1
+1 123.8150 1
+4 135.7395 1
+16 176.5231 1
+64 197.3936 1
+256 204.6343 1
+1024 200.4391 1
+4096 210.9571 1
 EOD
 set output 'docs/data/bench/time_vs_lights.png.tmp'
-set multiplot layout 2,3 title 'Median ms per frame against light count, 800x800, llvmpipe (LLVM 15.0.6, 256 bits) (log-log; open marks: extrapolated)'
+set multiplot layout 2,3 title 'Median ms per frame against light count, 800x800, llvmpipe (LLVM 15.0.6, 256 bits) (log-log; ringed marks: extrapolated)'
 set logscale xy
 set grid
 set key top left
 set xlabel 'lights'
 set ylabel 'ms per frame'
 set title 'default'
-plot $t_0_0 using 1:2 with lines lc 1 title 'forward-naive', $t_0_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
-     $t_0_1 using 1:2 with lines lc 2 title 'forward', $t_0_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_0_2 using 1:2 with lines lc 3 title 'forward-plus', $t_0_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_0_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_0_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_0_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_0_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
-     $t_0_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_0_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_0_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
-     $t_0_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_0_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_0_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
-     $t_0_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_0_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_0_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
-     $t_0_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_0_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_0_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
+plot $t_0_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_0_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_0_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_0_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_0_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_0_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_0_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_0_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_0_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_0_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_0_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_0_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_0_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_0_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_0_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_0_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_0_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_0_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_0_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_0_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_0_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_0_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_0_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_0_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_0_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_0_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 set title 'city'
-plot $t_1_0 using 1:2 with lines lc 1 title 'forward-naive', $t_1_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
-     $t_1_1 using 1:2 with lines lc 2 title 'forward', $t_1_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_1_2 using 1:2 with lines lc 3 title 'forward-plus', $t_1_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_1_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_1_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_1_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_1_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
-     $t_1_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_1_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_1_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
-     $t_1_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_1_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_1_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
-     $t_1_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_1_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_1_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
-     $t_1_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_1_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_1_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
+plot $t_1_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_1_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_1_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_1_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_1_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_1_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_1_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_1_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_1_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_1_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_1_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_1_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_1_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_1_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_1_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_1_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_1_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_1_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_1_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_1_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_1_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_1_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_1_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_1_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_1_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_1_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 set title 'bunnies'
-plot $t_2_0 using 1:2 with lines lc 1 title 'forward-naive', $t_2_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
-     $t_2_1 using 1:2 with lines lc 2 title 'forward', $t_2_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_2_2 using 1:2 with lines lc 3 title 'forward-plus', $t_2_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_2_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_2_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_2_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_2_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
-     $t_2_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_2_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_2_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
-     $t_2_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_2_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_2_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
-     $t_2_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_2_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_2_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
-     $t_2_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_2_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_2_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
+plot $t_2_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_2_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_2_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_2_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_2_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_2_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_2_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_2_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_2_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_2_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_2_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_2_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_2_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_2_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_2_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_2_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_2_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_2_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_2_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_2_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_2_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_2_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_2_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_2_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_2_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_2_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 set title 'sphere'
-plot $t_3_0 using 1:2 with lines lc 1 title 'forward-naive', $t_3_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
-     $t_3_1 using 1:2 with lines lc 2 title 'forward', $t_3_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_3_2 using 1:2 with lines lc 3 title 'forward-plus', $t_3_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_3_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_3_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_3_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_3_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
-     $t_3_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_3_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_3_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
-     $t_3_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_3_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_3_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
-     $t_3_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_3_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_3_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
-     $t_3_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_3_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_3_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
+plot $t_3_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_3_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_3_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_3_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_3_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_3_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_3_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_3_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_3_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_3_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_3_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_3_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_3_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_3_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_3_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_3_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_3_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_3_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_3_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_3_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_3_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_3_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_3_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_3_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_3_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_3_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 set title 'teapots'
-plot $t_4_0 using 1:2 with lines lc 1 title 'forward-naive', $t_4_0 using 1:(($3)>0?$2:NaN) with points lc 1 pt 7 notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc 1 pt 6 notitle, \
-     $t_4_1 using 1:2 with lines lc 2 title 'forward', $t_4_1 using 1:(($3)>0?$2:NaN) with points lc 2 pt 7 notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc 2 pt 6 notitle, \
-     $t_4_2 using 1:2 with lines lc 3 title 'forward-plus', $t_4_2 using 1:(($3)>0?$2:NaN) with points lc 3 pt 7 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc 3 pt 6 notitle, \
-     $t_4_3 using 1:2 with lines lc 4 title 'deferred-fullscreen', $t_4_3 using 1:(($3)>0?$2:NaN) with points lc 4 pt 7 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc 4 pt 6 notitle, \
-     $t_4_4 using 1:2 with lines lc 5 title 'deferred-volumes', $t_4_4 using 1:(($3)>0?$2:NaN) with points lc 5 pt 7 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc 5 pt 6 notitle, \
-     $t_4_5 using 1:2 with lines lc 6 title 'deferred-volumes-windowed', $t_4_5 using 1:(($3)>0?$2:NaN) with points lc 6 pt 7 notitle, $t_4_5 using 1:(($3)>0?NaN:$2) with points lc 6 pt 6 notitle, \
-     $t_4_6 using 1:2 with lines lc 7 title 'deferred-stencil', $t_4_6 using 1:(($3)>0?$2:NaN) with points lc 7 pt 7 notitle, $t_4_6 using 1:(($3)>0?NaN:$2) with points lc 7 pt 6 notitle, \
-     $t_4_7 using 1:2 with lines lc 8 title 'deferred-tiled', $t_4_7 using 1:(($3)>0?$2:NaN) with points lc 8 pt 7 notitle, $t_4_7 using 1:(($3)>0?NaN:$2) with points lc 8 pt 6 notitle, \
-     $t_4_8 using 1:2 with lines lc 9 title 'deferred-clustered', $t_4_8 using 1:(($3)>0?$2:NaN) with points lc 9 pt 7 notitle, $t_4_8 using 1:(($3)>0?NaN:$2) with points lc 9 pt 6 notitle
+plot $t_4_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_4_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_4_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_4_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_4_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_4_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_4_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_4_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_4_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_4_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_4_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_4_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_4_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_4_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_4_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_4_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_4_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_4_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_4_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_4_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_4_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_4_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_4_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_4_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_4_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_4_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 unset multiplot
 $e_0 << EOD
 EOD
 $e_1 << EOD
-7.22861 398.7251 0.0144153 0.5
-11.4784 378.8559 0.021697 1
-14.9631 361.5651 0.0270504 2
-18.982 353.0005 0.0324618 5
-21.3178 355.7640 0.035426 10
-23.4325 347.8224 0.0381214 20
-23.9771 343.1752 0.0388776 32
+7.22861 1038.3986 0.0144153 0.5
+11.4784 1180.3355 0.021697 1
+14.9631 1088.8960 0.0270504 2
+18.982 1313.6329 0.0324618 5
+21.3178 1117.0870 0.035426 10
+23.4325 960.1375 0.0381214 20
+23.9771 1191.1116 0.0388776 32
 EOD
 $e_2 << EOD
-7.22861 165.5301 0.0144153 0.5
-11.4784 86.4155 0.021697 1
-14.9631 42.1494 0.0270504 2
-18.982 22.2854 0.0324618 5
-21.3178 16.5198 0.035426 10
-23.4325 12.0607 0.0381214 20
-23.9771 11.1842 0.0388776 32
+7.22861 488.0715 0.0144153 0.5
+11.4784 250.9398 0.021697 1
+14.9631 106.8420 0.0270504 2
+18.982 60.7845 0.0324618 5
+21.3178 41.9073 0.035426 10
+23.4325 31.9912 0.0381214 20
+23.9771 24.7504 0.0388776 32
 EOD
 $e_3 << EOD
-7.28246 400.8896 nan 0.5
-11.5296 401.1196 nan 1
-15.0112 400.8609 nan 2
-19.0165 401.1544 nan 5
-21.3264 405.3814 nan 10
-23.421 402.3285 nan 20
-23.9611 402.2677 nan 32
+7.28246 1159.9639 nan 0.5
+11.5296 1187.2779 nan 1
+15.0112 1233.1366 nan 2
+19.0165 1262.4569 nan 5
+21.3264 1197.2009 nan 10
+23.421 1097.6345 nan 20
+23.9611 1267.0418 nan 32
 EOD
 $e_4 << EOD
-7.49654 424.6653 0.0149296 0.5
-11.6106 215.0513 0.0219278 1
-15.0429 99.7195 0.0271806 2
-19.0262 54.1022 0.0325424 5
-21.33 37.5720 0.0354912 10
-23.4219 22.6114 0.0381763 20
-23.9616 19.1621 0.0389301 32
+7.49654 843.0165 0.0149296 0.5
+11.6106 456.3690 0.0219278 1
+15.0429 200.9564 0.0271806 2
+19.0262 101.4272 0.0325424 5
+21.33 68.7963 0.0354912 10
+23.4219 56.3662 0.0381763 20
+23.9616 43.5900 0.0389301 32
 EOD
 $e_5 << EOD
-11.6649 424.8049 0.0220537 0.5
-15.1021 214.1087 0.0273095 1
-18.1067 99.7289 0.0314571 2
-21.2168 54.3423 0.0354777 5
-22.9621 37.3349 0.0377154 10
-23.9982 22.2940 0.0390673 20
-24.2995 18.9839 0.0394997 32
+11.6649 900.6039 0.0220537 0.5
+15.1021 410.4480 0.0273095 1
+18.1067 211.4416 0.0314571 2
+21.2168 100.6919 0.0354777 5
+22.9621 69.2562 0.0377154 10
+23.9982 54.6484 0.0390673 20
+24.2995 41.1821 0.0394997 32
 EOD
 $e_6 << EOD
-7.50338 562.4033 0.0149434 0.5
-11.6121 357.4860 0.0219304 1
-15.0432 154.9319 0.0271814 2
-19.0262 98.2369 0.0325425 5
-21.33 66.1248 0.0354912 10
-23.422 35.9216 0.0381763 20
-23.9616 29.3499 0.0389301 32
+7.50338 1206.4788 0.0149434 0.5
+11.6121 629.4505 0.0219304 1
+15.0432 319.2517 0.0271814 2
+19.0262 173.6488 0.0325425 5
+21.33 103.7808 0.0354912 10
+23.422 83.1976 0.0381763 20
+23.9616 64.4566 0.0389301 32
 EOD
 $e_7 << EOD
-7.28246 138.5619 nan 0.5
-11.5296 86.1281 nan 1
-15.0112 60.3999 nan 2
-19.0165 52.9927 nan 5
-21.3264 50.0962 nan 10
-23.421 45.6411 nan 20
-23.9611 45.1607 nan 32
+7.28246 382.0304 nan 0.5
+11.5296 219.8035 nan 1
+15.0112 149.7916 nan 2
+19.0165 132.4281 nan 5
+21.3264 118.9858 nan 10
+23.421 112.3704 nan 20
+23.9611 101.3110 nan 32
 EOD
 $e_8 << EOD
-7.28246 162.7342 0.0145279 0.5
-11.5296 93.4622 0.0217917 1
-15.0112 51.1341 0.0271301 2
-19.0165 34.7026 0.0325252 5
-21.3264 29.4864 0.0354808 10
-23.421 23.0710 0.0381688 20
-23.9611 22.1964 0.0389232 32
+7.28246 488.6783 0.0145279 0.5
+11.5296 254.7402 0.0217917 1
+15.0112 139.5937 0.0271301 2
+19.0165 82.0506 0.0325252 5
+21.3264 65.8170 0.0354808 10
+23.421 62.6000 0.0381688 20
+23.9611 46.4206 0.0389232 32
 EOD
 set output 'docs/data/bench/speed_vs_error.png.tmp'
 unset logscale
@@ -547,22 +547,22 @@ set key top right
 set ylabel 'ms per frame'
 set title '8-bit display error'
 set xlabel 'mean |error| in 8-bit levels'
-plot $e_1 using 1:2 with linespoints lc 2 pt 7 title 'forward', $e_1 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 2 notitle, \
-     $e_2 using 1:2 with linespoints lc 3 pt 7 title 'forward-plus', $e_2 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 3 notitle, \
-     $e_3 using 1:2 with linespoints lc 4 pt 7 title 'deferred-fullscreen', $e_3 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle, \
-     $e_4 using 1:2 with linespoints lc 5 pt 7 title 'deferred-volumes', $e_4 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 5 notitle, \
-     $e_5 using 1:2 with linespoints lc 6 pt 7 title 'deferred-volumes-windowed', $e_5 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 6 notitle, \
-     $e_6 using 1:2 with linespoints lc 7 pt 7 title 'deferred-stencil', $e_6 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 7 notitle, \
-     $e_7 using 1:2 with linespoints lc 8 pt 7 title 'deferred-tiled', $e_7 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 8 notitle, \
-     $e_8 using 1:2 with linespoints lc 9 pt 7 title 'deferred-clustered', $e_8 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 9 notitle
+plot $e_1 using 1:2 with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $e_1 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#e41a1c' notitle, \
+     $e_2 using 1:2 with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $e_2 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#808080' notitle, \
+     $e_3 using 1:2 with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $e_3 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#ff7f00' notitle, \
+     $e_4 using 1:2 with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $e_4 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#a65628' notitle, \
+     $e_5 using 1:2 with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $e_5 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#f781bf' notitle, \
+     $e_6 using 1:2 with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $e_6 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#000000' notitle, \
+     $e_7 using 1:2 with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $e_7 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#17becf' notitle, \
+     $e_8 using 1:2 with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $e_8 using 1:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#1a237e' notitle
 set title 'linear HDR error (renderers with a linear output)'
 set xlabel 'mean |error| of linear radiance'
-plot $e_1 using 3:2 with linespoints lc 2 pt 7 title 'forward', $e_1 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 2 notitle, \
-     $e_2 using 3:2 with linespoints lc 3 pt 7 title 'forward-plus', $e_2 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 3 notitle, \
-     $e_3 using 3:2 with linespoints lc 4 pt 7 title 'deferred-fullscreen', $e_3 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 4 notitle, \
-     $e_4 using 3:2 with linespoints lc 5 pt 7 title 'deferred-volumes', $e_4 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 5 notitle, \
-     $e_5 using 3:2 with linespoints lc 6 pt 7 title 'deferred-volumes-windowed', $e_5 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 6 notitle, \
-     $e_6 using 3:2 with linespoints lc 7 pt 7 title 'deferred-stencil', $e_6 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 7 notitle, \
-     $e_7 using 3:2 with linespoints lc 8 pt 7 title 'deferred-tiled', $e_7 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 8 notitle, \
-     $e_8 using 3:2 with linespoints lc 9 pt 7 title 'deferred-clustered', $e_8 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor lt 9 notitle
+plot $e_1 using 3:2 with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $e_1 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#e41a1c' notitle, \
+     $e_2 using 3:2 with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $e_2 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#808080' notitle, \
+     $e_3 using 3:2 with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $e_3 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#ff7f00' notitle, \
+     $e_4 using 3:2 with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $e_4 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#a65628' notitle, \
+     $e_5 using 3:2 with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $e_5 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#f781bf' notitle, \
+     $e_6 using 3:2 with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $e_6 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#000000' notitle, \
+     $e_7 using 3:2 with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $e_7 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#17becf' notitle, \
+     $e_8 using 3:2 with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $e_8 using 3:2:(sprintf('%g', $4)) with labels offset 0.8,0.6 textcolor rgb '#1a237e' notitle
 unset multiplot
