@@ -76,7 +76,8 @@ static void write_time_plots(FILE *f, const bench_state *st)
             int r = o->renderers[i];
             fprintf(f, "%s$t_%d_%d using 1:(($3)>0?$2:NaN) with linespoints %s title '%s', ",
                     i ? ", \\\n     " : "", s, i, style_of(r, false), bench_renderer_name(r));
-            fprintf(f, "$t_%d_%d using 1:2 with lines %s notitle, ", s, i, style_of(r, false));
+            /* a line takes a colour, no point type (gnuplot warns) */
+            fprintf(f, "$t_%d_%d using 1:2 with lines lc rgb '%s' notitle, ", s, i, renderer_colours[r % STYLES]);
             fprintf(f, "$t_%d_%d using 1:(($3)>0?NaN:$2) with points %s notitle, ", s, i, style_of(r, true));
             fprintf(f, "$t_%d_%d using 1:(($3)>0?NaN:$2) with points %s notitle", s, i, style_of(r, false));
         }
