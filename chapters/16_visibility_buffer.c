@@ -194,7 +194,8 @@ static bool draw_visibility(const gpu_scene *gs)
     glUseProgram(state.visibility_program);
     gpu_scene_bind_objects(gs, state.visibility_program, SHADER_UNIT_OBJECTS);
     gpu_scene_draw(gs, state.visibility_program);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    if (state.vis_pass == VIS_DEPTH_ONLY)
+        glDrawBuffer(GL_COLOR_ATTACHMENT0);
     gl_pass_state_reset();
     return gl_check("16 visibility pass");
 }

@@ -254,23 +254,29 @@ void gbuffer_layout_depth_begin(const gbuffer_layout *layout, const gpu_scene *g
     reversed_view_proj(&gs->view, view->view.view_proj);
     state->depth_func = mirror_depth_func(state->depth_func);
     set_clip_control(true);
+    glClearDepth(0.0); /* far, for a pass that clears */
 }
 
 void gbuffer_layout_depth_end(const gbuffer_layout *layout)
 {
-    if (is_reversed(layout))
-        set_clip_control(false);
+    if (!is_reversed(layout))
+        return;
+    set_clip_control(false);
+    glClearDepth(1.0);
 }
 
-void gbuffer_layout_inv_view_proj(const gbuffer_layout *layout, const gpu_scene *gs, mat4 out)
+void gbuffer_layout_bind_depth(const gbuffer_layout *layout, const gpu_scene *gs, GLuint program)
 {
-    if (!is_reversed(layout)) {
-        glm_mat4_copy((vec4 *)gs->view.inv_view_proj, out);
-        return;
+    const bool reversed = is_reversed(layout);
+    mat4 inv;
+    if (reversed) {
+        mat4 vp;
+        reversed_view_proj(&gs->view, vp);
+        invert_to_float((const float *)vp, inv);
     }
-    mat4 vp;
-    reversed_view_proj(&gs->view, vp);
-    invert_to_float((const float *)vp, out);
+    glUniformMatrix4fv(glGetUniformLocation(program, "u_inv_view_proj"), 1, GL_FALSE,
+                       reversed ? (const float *)inv : (const float *)gs->view.inv_view_proj);
+    glUniform1i(glGetUniformLocation(program, "u_gbuffer_reversed_z"), reversed);
 }
 
 void gbuffer_depth_test_begin(const gbuffer *g, const gpu_scene *gs, gpu_scene *view, gl_pass_state *state)
@@ -380,11 +386,11 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
                   gs->view.width, gs->view.height);
         return false;
     }
-    const bool reversed = is_reversed(g->desc.layout);
     frame_timer_mark("geometry");
     glBindFramebuffer(GL_FRAMEBUFFER, g->fbo.id);
     glViewport(0, 0, g->fbo.width, g->fbo.height);
-    /* Zero normal/material and depth 1 (reversed: 0) mark the background; the lighting pass tests
+    /* Zero normal/material and depth 1 (reversed: 0, the depth test's begin sets it) mark the
+     * background; the lighting pass tests
      * depth. Same state as forward_render (GL_LEQUAL: on an exact depth tie the object drawn last
      * wins): an object hides another exactly where it does there. Reversed, GL_GEQUAL keeps that. */
     gl_pass_state geometry = {.cull = GL_BACK, .depth_func = GL_LEQUAL, .depth_write = true};
@@ -392,11 +398,9 @@ bool gbuffer_render(gbuffer *g, const gpu_scene *gs)
     gbuffer_depth_test_begin(g, gs, &view, &geometry);
     gl_pass_state_apply(&geometry);
     glClearColor(0, 0, 0, 0);
-    glClearDepth(reversed ? 0.0 : 1.0);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     bool stencil = has_stencil(gbuffer_layout_depth_format(g->desc.layout, g->desc.stencil));
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | (stencil ? GL_STENCIL_BUFFER_BIT : 0));
-    glClearDepth(1.0);
     /* Without this an SRGB8 attachment stores the linear value unconverted (and reads decode it). */
     glEnable(GL_FRAMEBUFFER_SRGB);
 
@@ -422,7 +426,6 @@ void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program
     static const char *const names[3] = {"u_gbuffer_albedo", "u_gbuffer_normal", "u_gbuffer_depth"};
     const GLuint textures[3] = {g->fbo.color[0], g->fbo.color[1],
                                 g->desc.stencil ? g->depth_copy.depth : g->fbo.depth};
-    const bool reversed = is_reversed(g->desc.layout);
     /* A multisampled G-buffer is read by shaders built with GBUFFER_MULTISAMPLE (sampler2DMS). */
     const GLenum target = g->fbo.samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     glUseProgram(program);
@@ -432,9 +435,7 @@ void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program
         glUniform1i(glGetUniformLocation(program, names[i]), first_unit + i);
     }
     glActiveTexture(GL_TEXTURE0);
-    mat4 inv;
-    gbuffer_layout_inv_view_proj(g->desc.layout, gs, inv);
-    glUniformMatrix4fv(glGetUniformLocation(program, "u_inv_view_proj"), 1, GL_FALSE, (const float *)inv);
+    gbuffer_layout_bind_depth(g->desc.layout, gs, program);
     /* RT2 on its own unit, bound or not: a sampler left on unit 0 would meet the lights' buffer there. */
     glActiveTexture(GL_TEXTURE0 + SHADER_UNIT_GBUFFER_EMISSIVE);
     glBindTexture(target, g->desc.emissive ? g->fbo.color[2] : 0);
@@ -442,7 +443,6 @@ void gbuffer_bind_textures(const gbuffer *g, const gpu_scene *gs, GLuint program
     glUniform1i(glGetUniformLocation(program, "u_gbuffer_emissive"), SHADER_UNIT_GBUFFER_EMISSIVE);
     glUniform1i(glGetUniformLocation(program, "u_gbuffer_has_emissive"), g->desc.emissive);
     glUniform1i(glGetUniformLocation(program, "u_gbuffer_normal_encoding"), g->desc.layout->normal_encoding);
-    glUniform1i(glGetUniformLocation(program, "u_gbuffer_reversed_z"), reversed);
     glUniform3fv(glGetUniformLocation(program, "u_eye"), 1, gs->view.eye);
     glUniform2f(glGetUniformLocation(program, "u_viewport_size"), (float)g->fbo.width, (float)g->fbo.height);
 }

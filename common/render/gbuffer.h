@@ -66,16 +66,18 @@
  *
  *   gbuffer_depth_test_begin(g, gs, view, state)
  *   gbuffer_depth_test_end(g)            around a pass that depth-tests against g's depth: with a
- *                                        reversed-Z layout they set glClipControl's [0,1] depth,
+ *                                        reversed-Z layout they set glClipControl's [0,1] depth (clear 0),
  *                                        put the reversed projection in view->view.view_proj (view is
  *                                        a copy of gs) and mirror state->depth_func (GREATER <-> LESS,
  *                                        GEQUAL <-> LEQUAL); with the others they only copy
  *   gbuffer_layout_depth_begin(layout, gs, view, state)
  *   gbuffer_layout_depth_end(layout)     the same for a target of the layout's depth that is not a
- *                                        G-buffer (chapter 17's depth-normal pre-pass)
- *   gbuffer_layout_inv_view_proj(layout, gs, out)
- *                                        the matrix that rebuilds a position from the layout's depth
- *                                        (reversed: the inverse of the reversed projection, in double)
+ *                                        G-buffer (chapter 17's depth-normal pre-pass); reversed, the
+ *                                        clear depth is 0 (far) between them, 1 again after
+ *   gbuffer_layout_bind_depth(layout, gs, program)
+ *                                        u_inv_view_proj and u_gbuffer_reversed_z for gbuffer_read.glsl
+ *                                        on the program in use (reversed: the inverse of the reversed
+ *                                        projection, in double); gbuffer_bind_textures calls it
  *
  * Layouts (gbuffer_layouts[]; docs/02_mrt_gbuffer.md has what each loses, measured):
  *   RT0  albedo.rgb: GL_SRGB8_ALPHA8 (sRGB-encoded: 8 bits spent where the eye sees them) or
@@ -215,7 +217,7 @@ bool gbuffer_layout_fits_pass(const gbuffer_layout *layout, const gl_pass_state 
 void gbuffer_layout_depth_begin(const gbuffer_layout *layout, const gpu_scene *gs, gpu_scene *view,
                                 gl_pass_state *state);
 void gbuffer_layout_depth_end(const gbuffer_layout *layout);
-void gbuffer_layout_inv_view_proj(const gbuffer_layout *layout, const gpu_scene *gs, mat4 out);
+void gbuffer_layout_bind_depth(const gbuffer_layout *layout, const gpu_scene *gs, GLuint program);
 void gbuffer_depth_test_begin(const gbuffer *g, const gpu_scene *gs, gpu_scene *view, gl_pass_state *state);
 void gbuffer_depth_test_end(const gbuffer *g);
 

@@ -137,11 +137,8 @@ bool ssao_draw_prepass(ssao *s, const gpu_scene *gs)
     /* its depth as the G-buffer's (reversed with a reversed-Z layout), so the passes read the same bits */
     gl_pass_state state = prepass;
     gpu_scene view;
-    const bool reversed = s->layout->depth == GBUFFER_DEPTH_D32F_REVERSED;
     gbuffer_layout_depth_begin(s->layout, gs, &view, &state);
-    glClearDepth(reversed ? 0.0 : 1.0);
     gpu_scene_draw_into(&view, s->normals.id, s->normals.width, s->normals.height, s->prepass_program, &state);
-    glClearDepth(1.0);
     gbuffer_layout_depth_end(s->layout);
     return gl_check("ssao depth-normal pre-pass");
 }
@@ -158,11 +155,8 @@ static void bind_prepass(const ssao *s, GLuint p, const gpu_scene *gs)
         glUniform1i(glGetUniformLocation(p, names[i]), SHADER_UNIT_GBUFFER + 1 + i);
     }
     glActiveTexture(GL_TEXTURE0);
-    mat4 inv;
-    gbuffer_layout_inv_view_proj(s->layout, gs, inv);
-    glUniformMatrix4fv(glGetUniformLocation(p, "u_inv_view_proj"), 1, GL_FALSE, (const float *)inv);
+    gbuffer_layout_bind_depth(s->layout, gs, p);
     glUniform1i(glGetUniformLocation(p, "u_gbuffer_normal_encoding"), s->layout->normal_encoding);
-    glUniform1i(glGetUniformLocation(p, "u_gbuffer_reversed_z"), s->layout->depth == GBUFFER_DEPTH_D32F_REVERSED);
     glUniform2f(glGetUniformLocation(p, "u_viewport_size"), (float)s->normals.width,
                 (float)s->normals.height);
 }
