@@ -54,9 +54,9 @@ static const cli_desc cli = {
             {"shadow-atlas", "SIZE", "the atlas's side in texels, a power of two from 256 (default 4096)", NULL, "4096",
              CLI_POWER_OF_TWO, 256, 32768},
             {"shadow-format", "FORMAT", "the atlas's depth format", formats, "d32f"},
-            {"pcf", "N", "comparisons a side averaged per lookup", chapter_14_pcfs, "3"},
-            {"normal-offset", "TEXELS", "receivers moved along their normal by this many texels (0 to 8)", NULL, "1.5",
-             CLI_REAL, 0, 8},
+            {"pcf", "N", "comparisons a side averaged per lookup", chapter_14_pcfs, CHAPTER_14_PCF},
+            {"normal-offset", "TEXELS", "receivers moved along their normal by this many texels (0 to 8)", NULL,
+             CHAPTER_14_NORMAL_OFFSET, CLI_REAL, 0, 8},
             {"slope-bias", "FACTOR", "glPolygonOffset factor of the shadow pass (0 to 16)", NULL, "2", CLI_REAL, 0, 16},
             {"shadows", "N", "shadow only the N most important lights (default: all)", NULL, NULL, CLI_WHOLE, 0, 1 << 20},
             {"shadow-cull", "ON", "draw only the casters that meet the light's sphere and the tile's frustum",
@@ -85,7 +85,7 @@ static struct {
 /* The atlas's options, checked against the context's largest texture. */
 static bool read_options(app *a, shadow_plan_desc *desc, GLenum *format, float *slope)
 {
-    double size = 4096, offset = 1.5, bias = 2, shadows = -1;
+    double size = 4096, offset = atof(CHAPTER_14_NORMAL_OFFSET), bias = 2, shadows = -1;
     GLint max_size = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
     /* the parser checked every range but the context's own largest texture: past it, an input error too */
@@ -259,7 +259,7 @@ bool chapter_14_shadows_create(app *a, shadow_atlas *s, gl_program_extra *extra)
         return true; /* no atlas, no define: the chapter's own picture */
     /* chapter 14's defaults for what the later chapters do not offer */
     const shadow_plan_desc desc = {.atlas_size = (int)size, .max_shadowed = (int)n, .pcf = atoi(app_extra(a, "pcf")),
-                                   .normal_offset = 1.5f, .cull = true};
+                                   .normal_offset = (float)atof(CHAPTER_14_NORMAL_OFFSET), .cull = true};
     if (!shadow_atlas_create(s, &desc, GL_DEPTH_COMPONENT32F, 2.0f))
         return false;
     *extra = shadow_atlas_extra(s);

@@ -7,7 +7,10 @@
 # same shadows.glsl; their surface points differ in the last bits (the G-buffer's position from depth,
 # its normal octahedral-encoded), which moves a PCF comparison across a shadow's edge on a few pixels
 # (bilinear PCF taps, not snapped to texels, keep that change below a level: measured 0 pixels over on
-# the default and spots scenes, 1 with --pcf 5).
+# the default and spots scenes). A wider filter needs a larger normal offset: its outer taps fall on the
+# receiver's own depth when it slopes away from the light, and a last-bit difference then flips them
+# (the default scene at --pcf 5: 187 pixels over with the default 0.25 texels, 1 with 1.5), so --pcf 3
+# and 5 are checked at --normal-offset 1.5 (docs/14_shadows.md, "Choosing the defaults").
 
 function(chapter_14_tests)
   set(S ${CMAKE_SOURCE_DIR}/tests/scenes)
@@ -20,7 +23,7 @@ function(chapter_14_tests)
   # The pictures the page shows (the default scene's is golden.14_shadows, with every chapter's).
   course_golden_test(14_shadows_teapots ${C} 1 0.0001 --scene ${A}/teapots.scene)
   course_golden_test(14_shadows_spots ${C} 1 0.0001 --scene ${A}/spots.scene)
-  course_golden_test(14_shadows_pcf1 ${C} 1 0.0001 --pcf 1)
+  course_golden_test(14_shadows_pcf3 ${C} 1 0.0001 --pcf 3 --normal-offset 1.5)
   course_golden_test(14_shadows_visibility ${C} 1 0.0001 --scene ${S}/shadow_one_light.scene --view visibility)
   course_golden_test(14_shadows_contact ${C} 1 0.0001 --scene ${S}/shadow_contact.scene)
   # The window's views of the atlas: each tile's depth in its light's importance colour, and a disc
@@ -44,15 +47,16 @@ function(chapter_14_tests)
     VS ${C} --renderer forward --scene ${A}/teapots.scene)
   course_agreement_test(14_forward_plus_teapots 0 0 ${C} --renderer forward-plus --scene ${A}/teapots.scene
     VS ${C} --renderer forward --scene ${A}/teapots.scene)
-  # One bright light: 0.02 % (measured 10 pixels of 76,800, at most 4/255, on its shadows' edges; chapter
-  # 11 on the same scene: none).
-  course_agreement_test(14_vs_forward_one_light 1 0.0002 ${C} --scene ${S}/shadow_one_light.scene
+  # One bright light: 0.03 % (measured 16 pixels of 76,800, at most 6/255, on its shadows' edges, 10 with
+  # --pcf 3: one bilinear comparison's edge is steeper than nine's average; chapter 11 on the same scene:
+  # none).
+  course_agreement_test(14_vs_forward_one_light 1 0.0003 ${C} --scene ${S}/shadow_one_light.scene
     VS ${C} --renderer forward --scene ${S}/shadow_one_light.scene)
   foreach(case "default|" "spots|--scene@${A}/spots.scene"
                "spot|--scene@${S}/shadow_spot.scene"
                "contact|--scene@${S}/shadow_contact.scene" "grazing|--scene@${S}/shadow_grazing.scene"
                "inside|--scene@${S}/shadow_inside.scene" "camera_inside|--scene@${S}/shadow_camera_inside.scene"
-               "pcf5|--pcf@5" "d16|--shadow-format@d16" "atlas512|--shadow-atlas@512")
+               "pcf3|--pcf@3@--normal-offset@1.5" "pcf5|--pcf@5@--normal-offset@1.5" "offset1.5|--normal-offset@1.5" "d16|--shadow-format@d16" "atlas512|--shadow-atlas@512")
     course_case("${case}" name args)
     course_agreement_test(14_vs_forward_${name} 1 0.0001 ${C} ${args} VS ${C} --renderer forward ${args})
     course_agreement_test(14_forward_plus_${name} 0 0 ${C} --renderer forward-plus ${args}

@@ -123,8 +123,10 @@ int main(int argc, char **argv)
     printf("%-8s %-4s %-14s %-11s %-10s %-10s %-6s %s\n", "atlas", "pcf", "normal_offset", "slope_bias", "lit_pixels",
            "wrong", "leak", "acne");
     for (int c = 0; ok && (c == 0 || 3 + 4 * c < argc); c++) {
-        const char *atlas = argc > 3 ? argv[3 + 4 * c] : "4096", *pcf = argc > 3 ? argv[4 + 4 * c] : "3";
-        const char *offset = argc > 3 ? argv[5 + 4 * c] : "1.5", *slope = argc > 3 ? argv[6 + 4 * c] : "2";
+        /* without a configuration: chapter 14's defaults (chapters.h) */
+        const char *atlas = argc > 3 ? argv[3 + 4 * c] : "4096", *pcf = argc > 3 ? argv[4 + 4 * c] : CHAPTER_14_PCF;
+        const char *offset = argc > 3 ? argv[5 + 4 * c] : CHAPTER_14_NORMAL_OFFSET;
+        const char *slope = argc > 3 ? argv[6 + 4 * c] : "2";
         const char *args[] = {"--view", "visibility", "--shadow-atlas", atlas, "--pcf", pcf,
                               "--normal-offset", offset, "--slope-bias", slope, NULL};
         long lit = 0, leak = 0;
