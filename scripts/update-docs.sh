@@ -14,6 +14,8 @@
 #   shadow-bench.md chapter 14 on the teapots: deferred, Forward+ and forward with 0 to 256 shadowed
 #                   lights, still and moving, with and without the caster culling, against chapter 11
 #                   (scripts/shadow-table.sh), and the issue's targets met or missed
+#   shadows.md      chapter 14 against exact shadow rays (the hard.shadow_reference_* tests' tables)
+#                   and the teapots' shadow pass with and without the culling (scripts/shadow-error.sh)
 #   storage/        build/bin/bench --storage only at 320x240: what to store per pixel (docs/16);
 #                   that part alone (about 7 minutes): scripts/update-docs.sh --storage-only
 #   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots; its ambient
@@ -270,6 +272,14 @@ $quick && shadow_size=160x120 shadow_target=160x120
 } >"$data/shadow-bench.md.tmp"
 mv "$data/shadow-bench.md.tmp" "$data/shadow-bench.md"
 echo "wrote $data/shadow-bench.md"
+# ... and against exact shadow rays (scripts/shadow-error.sh: the hard.shadow_reference_* tests' tables,
+# about 2 minutes), with the shadow pass's work on the teapots.
+{
+  printf "# Chapter 14: shadows against exact shadow rays, and the shadow pass's work\n\n%s\n\n" "$stamp"
+  scripts/shadow-error.sh build
+} >"$data/shadows.md.tmp"
+mv "$data/shadows.md.tmp" "$data/shadows.md"
+echo "wrote $data/shadows.md"
 
 storage_table
 
