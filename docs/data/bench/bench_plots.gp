@@ -2,409 +2,409 @@
 set terminal pngcairo size 1500,900 font ',10'
 set datafile missing 'NA'
 $t_0_0 << EOD
-1 25.6305 1
-4 43.8635 1
-16 118.0137 1
-64 420.2858 1
-256 1629.3742 0
-1024 6465.7280 0
-4096 25811.1430 0
+1 22.7081 1
+4 39.1864 1
+16 126.7265 1
+64 388.2089 1
+256 1516.3148 1
+1024 6028.7384 0
+4096 24078.4330 0
 EOD
 $t_0_1 << EOD
-1 28.4530 1
-4 46.5901 1
-16 98.6122 1
-64 290.9371 1
-256 949.0297 1
-1024 3581.4004 0
-4096 14110.8831 0
+1 23.3815 1
+4 38.5617 1
+16 105.5734 1
+64 271.5796 1
+256 1018.1106 1
+1024 4004.2346 0
+4096 15948.7305 0
 EOD
 $t_0_2 << EOD
-1 39.3299 1
-4 60.8330 1
-16 78.1152 1
-64 69.2382 1
-256 51.2765 1
-1024 55.8867 1
-4096 80.0112 1
+1 35.0348 1
+4 52.9617 1
+16 77.5948 1
+64 62.4853 1
+256 54.5805 1
+1024 55.9760 1
+4096 84.6545 1
 EOD
 $t_0_3 << EOD
-1 51.4217 1
-4 70.5900 1
-16 129.2905 1
-64 336.3896 1
-256 1024.1428 1
-1024 3775.1556 0
-4096 14779.2069 0
+1 42.7618 1
+4 56.3643 1
+16 126.1118 1
+64 309.6037 1
+256 1168.3902 1
+1024 4603.5362 0
+4096 18344.1201 0
 EOD
 $t_0_4 << EOD
-1 63.6220 1
-4 108.9934 1
-16 143.3026 1
-64 123.9515 1
-256 91.5492 1
-1024 118.1656 1
-4096 259.0758 1
+1 50.7903 1
+4 85.8808 1
+16 120.4429 1
+64 105.9146 1
+256 100.8313 1
+1024 121.3191 1
+4096 255.2684 1
 EOD
 $t_0_5 << EOD
-1 62.5808 1
-4 104.5373 1
-16 131.9775 1
-64 114.8137 1
-256 91.3147 1
-1024 125.4246 1
-4096 251.1598 1
+1 50.6420 1
+4 81.0733 1
+16 125.4517 1
+64 108.6393 1
+256 105.4893 1
+1024 126.6760 1
+4096 252.1610 1
 EOD
 $t_0_6 << EOD
-1 68.0933 1
-4 118.8454 1
-16 141.8383 1
-64 160.4762 1
-256 138.5378 1
-1024 237.0917 1
-4096 534.9159 1
+1 57.1830 1
+4 91.1425 1
+16 123.3098 1
+64 157.0914 1
+256 162.9259 1
+1024 238.4868 1
+4096 481.5598 1
 EOD
 $t_0_7 << EOD
-1 122.2167 1
-4 144.0542 1
-16 144.0494 1
-64 137.6207 1
-256 117.8446 1
-1024 134.0407 1
-4096 151.2045 1
+1 113.0021 1
+4 124.7069 1
+16 138.3116 1
+64 132.2076 1
+256 119.4505 1
+1024 124.8558 1
+4096 150.3801 1
 EOD
 $t_0_8 << EOD
-1 69.4974 1
-4 91.6882 1
-16 99.0271 1
-64 94.2009 1
-256 75.4902 1
-1024 88.5441 1
-4096 103.1113 1
+1 62.1504 1
+4 76.6729 1
+16 95.3292 1
+64 89.9859 1
+256 75.4256 1
+1024 80.3728 1
+4096 105.5887 1
 EOD
 $t_1_0 << EOD
-1 85.7071 1
-4 153.9239 1
-16 336.1725 1
-64 1291.5196 1
-256 5112.9081 0
-1024 20398.4622 0
-4096 81540.6784 0
+1 80.7420 1
+4 131.4993 1
+16 403.7716 1
+64 1129.6844 1
+256 4033.3354 0
+1024 15647.9396 0
+4096 62106.3562 0
 EOD
 $t_1_1 << EOD
-1 70.1964 1
-4 110.4678 1
-16 155.7493 1
-64 303.0676 1
-256 955.2829 1
-1024 3564.1442 0
-4096 13999.5893 0
+1 61.1836 1
+4 88.5428 1
+16 141.0261 1
+64 245.1896 1
+256 699.9183 1
+1024 2518.8332 0
+4096 9794.4927 0
 EOD
 $t_1_2 << EOD
-1 90.1373 1
-4 130.4965 1
-16 145.2856 1
-64 167.2319 1
-256 174.5573 1
-1024 167.9196 1
-4096 185.9121 1
+1 73.0379 1
+4 109.1941 1
+16 152.0241 1
+64 128.3275 1
+256 136.8478 1
+1024 154.9276 1
+4096 170.9705 1
 EOD
 $t_1_3 << EOD
-1 85.8507 1
-4 101.4674 1
-16 148.2154 1
-64 438.2505 1
-256 1598.3912 0
-1024 6238.9537 0
-4096 24801.2039 0
+1 71.3088 1
+4 86.7916 1
+16 164.0278 1
+64 393.3741 1
+256 1298.3953 1
+1024 4918.4803 0
+4096 19398.8204 0
 EOD
 $t_1_4 << EOD
-1 97.3264 1
-4 146.0219 1
-16 147.9210 1
-64 204.4161 1
-256 202.2538 1
-1024 205.6624 1
-4096 228.0281 1
+1 80.0936 1
+4 114.7685 1
+16 174.9179 1
+64 164.3993 1
+256 144.2696 1
+1024 177.2831 1
+4096 218.4244 1
 EOD
 $t_1_5 << EOD
-1 99.9833 1
-4 141.6766 1
-16 150.0491 1
-64 209.7718 1
-256 176.3848 1
-1024 206.5278 1
-4096 242.3261 1
+1 84.9076 1
+4 110.6554 1
+16 172.8137 1
+64 154.4886 1
+256 143.1810 1
+1024 170.2051 1
+4096 219.2808 1
 EOD
 $t_1_6 << EOD
-1 106.4898 1
-4 145.9912 1
-16 181.3783 1
-64 210.7295 1
-256 247.0760 1
-1024 314.4664 1
-4096 409.6659 1
+1 83.6805 1
+4 118.3005 1
+16 187.3965 1
+64 161.9039 1
+256 182.9338 1
+1024 273.8656 1
+4096 372.2311 1
 EOD
 $t_1_7 << EOD
-1 157.7590 1
-4 180.2856 1
-16 174.4779 1
-64 189.8109 1
-256 204.5118 1
-1024 200.7543 1
-4096 210.2791 1
+1 143.5562 1
+4 153.8826 1
+16 177.1171 1
+64 135.5898 1
+256 148.5693 1
+1024 194.7071 1
+4096 205.4518 1
 EOD
 $t_1_8 << EOD
-1 99.1500 1
-4 111.9721 1
-16 115.9745 1
-64 150.2836 1
-256 155.0098 1
-1024 152.3916 1
-4096 145.0577 1
+1 86.5817 1
+4 103.9282 1
+16 127.8057 1
+64 104.5906 1
+256 113.2816 1
+1024 119.4204 1
+4096 146.2147 1
 EOD
 $t_2_0 << EOD
-1 1129.2505 1
-4 1031.1581 1
-16 1277.0829 1
-64 2260.7818 0
-256 6195.5777 0
-1024 21934.7610 0
-4096 84891.4945 0
+1 809.7973 1
+4 983.4762 1
+16 1678.1919 0
+64 4457.0547 0
+256 15572.5061 0
+1024 60034.3114 0
+4096 237881.5326 0
 EOD
 $t_2_1 << EOD
-1 1951.3718 1
-4 1951.3718 0
-16 1951.3718 0
-64 1951.3718 0
-256 1951.3718 0
-1024 1951.3718 0
-4096 1951.3718 0
+1 1353.1281 1
+4 1613.7471 1
+16 2656.2230 0
+64 6826.1266 0
+256 23505.7409 0
+1024 90224.1983 0
+4096 357098.0277 0
 EOD
 $t_2_2 << EOD
-1 1953.9262 1
-4 1953.9262 0
-16 1953.9262 0
-64 1953.9262 0
-256 1953.9262 0
-1024 1953.9262 0
-4096 1953.9262 0
+1 1344.5883 1
+4 1647.7866 1
+16 2860.5796 0
+64 7711.7515 0
+256 27116.4393 0
+1024 104735.1904 0
+4096 415210.1948 0
 EOD
 $t_2_3 << EOD
-1 1011.5727 1
-4 981.7388 1
-16 766.6549 1
-64 1290.2322 1
-256 3384.5414 0
-1024 11761.7781 0
-4096 45270.7251 0
+1 686.8268 1
+4 944.8564 1
+16 1976.9748 0
+64 6105.4484 0
+256 22619.3426 0
+1024 88674.9196 0
+4096 352897.2274 0
 EOD
 $t_2_4 << EOD
-1 965.4866 1
-4 932.1220 1
-16 792.8479 1
-64 911.4920 1
-256 1063.3478 1
-1024 1670.7713 0
-4096 4100.4650 0
+1 694.6813 1
+4 996.7282 1
+16 2204.9157 0
+64 7037.6657 0
+256 26368.6660 0
+1024 103692.6669 0
+4096 412988.6704 0
 EOD
 $t_2_5 << EOD
-1 968.6078 1
-4 938.0485 1
-16 767.7748 1
-64 961.6684 1
-256 1737.2432 0
-1024 4839.5420 0
-4096 17248.7373 0
+1 724.8920 1
+4 737.2977 1
+16 847.8396 1
+64 1025.7028 1
+256 1737.1558 0
+1024 4582.9678 0
+4096 15966.2155 0
 EOD
 $t_2_6 << EOD
-1 1001.5672 1
-4 958.4877 1
-16 962.0053 1
-64 1051.2725 1
-256 976.6451 1
-1024 1125.3109 1
-4096 1719.9739 0
+1 707.9355 1
+4 768.2462 1
+16 994.1234 1
+64 1897.6323 0
+256 5511.6679 0
+1024 19967.8102 0
+4096 77792.3792 0
 EOD
 $t_2_7 << EOD
-1 1058.3403 1
-4 1065.1264 1
-16 1002.0525 1
-64 1157.2147 1
-256 1777.8631 0
-1024 4260.4571 0
-4096 14190.8330 0
+1 778.1127 1
+4 839.8221 1
+16 936.3741 1
+64 977.3623 1
+256 885.7492 1
+1024 956.2665 1
+4096 887.1079 1
 EOD
 $t_2_8 << EOD
-1 1013.1297 1
-4 905.6367 1
-16 869.1658 1
-64 1073.9197 1
-256 1892.9352 0
-1024 5168.9973 0
-4096 18273.2455 0
+1 791.4260 1
+4 820.1074 1
+16 905.1097 1
+64 936.9530 1
+256 784.9226 1
+1024 936.1027 1
+4096 1540.8228 0
 EOD
 $t_3_0 << EOD
-1 22.4120 1
-4 41.5473 1
-16 96.7578 1
-64 324.0058 1
-256 1418.4065 1
-1024 5796.0091 0
-4096 23306.4194 0
+1 26.6208 1
+4 35.9399 1
+16 82.0115 1
+64 287.7656 1
+256 1084.0838 1
+1024 4269.3568 0
+4096 17010.4487 0
 EOD
 $t_3_1 << EOD
-1 26.9372 1
-4 47.5564 1
-16 99.7972 1
-64 196.0674 1
-256 611.5712 1
-1024 2273.5865 0
-4096 8921.6475 0
+1 32.2070 1
+4 40.4102 1
+16 78.4732 1
+64 178.7701 1
+256 491.9449 1
+1024 1744.6442 0
+4096 6755.4414 0
 EOD
 $t_3_2 << EOD
-1 39.0967 1
-4 56.3122 1
-16 46.0278 1
-64 47.9687 1
-256 48.9918 1
-1024 91.2328 1
-4096 313.4226 1
+1 44.3892 1
+4 49.9530 1
+16 35.6600 1
+64 38.2308 1
+256 38.8370 1
+1024 82.9565 1
+4096 242.1526 1
 EOD
 $t_3_3 << EOD
-1 48.9247 1
-4 59.3853 1
-16 81.3044 1
-64 187.8650 1
-256 781.4661 1
-1024 3155.8708 0
-4096 12653.4893 0
+1 52.2512 1
+4 49.2766 1
+16 62.3095 1
+64 162.5092 1
+256 603.7634 1
+1024 2368.7805 0
+4096 9428.8486 0
 EOD
 $t_3_4 << EOD
-1 51.5373 1
-4 78.5839 1
-16 73.8426 1
-64 69.7281 1
-256 110.9098 1
-1024 267.2118 1
-4096 1157.1626 1
+1 56.5641 1
+4 64.3380 1
+16 49.9425 1
+64 63.1282 1
+256 85.2815 1
+1024 235.5336 1
+4096 823.4710 1
 EOD
 $t_3_5 << EOD
-1 55.7997 1
-4 79.3106 1
-16 75.2217 1
-64 70.2737 1
-256 111.0088 1
-1024 264.8917 1
-4096 1165.7838 1
+1 57.9260 1
+4 65.6136 1
+16 50.1873 1
+64 60.8195 1
+256 88.7138 1
+1024 243.8056 1
+4096 827.2221 1
 EOD
 $t_3_6 << EOD
-1 59.6665 1
-4 87.9070 1
-16 83.1976 1
-64 78.0571 1
-256 118.4693 1
-1024 262.6678 1
-4096 1134.2590 1
+1 68.0315 1
+4 76.3405 1
+16 52.4696 1
+64 69.9689 1
+256 94.2084 1
+1024 254.6246 1
+4096 810.7634 1
 EOD
 $t_3_7 << EOD
-1 116.0904 1
-4 123.7354 1
-16 118.8154 1
-64 111.0392 1
-256 125.3358 1
-1024 129.0207 1
-4096 213.3046 1
+1 122.9814 1
+4 116.7402 1
+16 78.0160 1
+64 96.2496 1
+256 86.8946 1
+1024 106.2631 1
+4096 177.0734 1
 EOD
 $t_3_8 << EOD
-1 61.6585 1
-4 74.9622 1
-16 66.6149 1
-64 64.2807 1
-256 69.9992 1
-1024 93.0178 1
-4096 220.9256 1
+1 67.2621 1
+4 63.6776 1
+16 46.3506 1
+64 50.7602 1
+256 50.1288 1
+1024 77.3410 1
+4096 193.8634 1
 EOD
 $t_4_0 << EOD
-1 100.8658 1
-4 133.4604 1
-16 294.5803 1
-64 1074.4020 1
-256 4193.6887 0
-1024 16670.8357 0
-4096 66579.4235 0
+1 87.8730 1
+4 132.1278 1
+16 269.3282 1
+64 866.2017 1
+256 3253.6955 0
+1024 12803.6709 0
+4096 51003.5724 0
 EOD
 $t_4_1 << EOD
-1 129.7481 1
-4 161.8098 1
-16 235.0942 1
-64 662.2041 1
-256 2370.6437 0
-1024 9204.4019 0
-4096 36539.4347 0
+1 113.4501 1
+4 151.2075 1
+16 221.5779 1
+64 491.9779 1
+256 1573.5778 0
+1024 5899.9775 0
+4096 23205.5764 0
 EOD
 $t_4_2 << EOD
-1 158.1469 1
-4 207.2089 1
-16 229.1360 1
-64 263.1350 1
-256 254.4152 1
-1024 280.1308 1
-4096 287.3413 1
+1 141.6872 1
+4 181.4671 1
+16 200.6609 1
+64 198.0128 1
+256 209.9691 1
+1024 188.7148 1
+4096 200.9377 1
 EOD
 $t_4_3 << EOD
-1 114.8535 1
-4 109.8021 1
-16 213.2209 1
-64 558.7931 1
-256 1941.0819 0
-1024 7470.2373 0
-4096 29586.8588 0
+1 91.8901 1
+4 118.2064 1
+16 167.3090 1
+64 456.2658 1
+256 1612.0928 0
+1024 6235.4007 0
+4096 24728.6326 0
 EOD
 $t_4_4 << EOD
-1 125.6391 1
-4 163.4255 1
-16 235.0528 1
-64 317.8136 1
-256 253.6782 1
-1024 261.4065 1
-4096 222.6625 1
+1 102.1375 1
+4 154.4294 1
+16 199.9819 1
+64 225.9757 1
+256 249.2414 1
+1024 178.7668 1
+4096 159.1450 1
 EOD
 $t_4_5 << EOD
-1 122.9084 1
-4 160.5006 1
-16 219.9346 1
-64 339.2987 1
-256 266.3883 1
-1024 256.2114 1
-4096 231.8195 1
+1 99.5385 1
+4 157.1502 1
+16 194.3725 1
+64 207.2106 1
+256 241.0502 1
+1024 177.9656 1
+4096 153.9446 1
 EOD
 $t_4_6 << EOD
-1 130.3937 1
-4 165.3089 1
-16 216.7898 1
-64 334.3339 1
-256 262.8109 1
-1024 304.8628 1
-4096 295.4477 1
+1 102.4739 1
+4 162.6947 1
+16 201.5298 1
+64 206.2862 1
+256 227.1089 1
+1024 204.3595 1
+4096 240.1840 1
 EOD
 $t_4_7 << EOD
-1 186.9387 1
-4 193.4027 1
-16 184.9416 1
-64 254.3264 1
-256 214.9735 1
-1024 249.7676 1
-4096 214.1584 1
+1 167.0656 1
+4 193.2790 1
+16 163.8458 1
+64 168.0912 1
+256 169.7305 1
+1024 163.2692 1
+4096 175.6737 1
 EOD
 $t_4_8 << EOD
-1 123.8150 1
-4 135.7395 1
-16 176.5231 1
-64 197.3936 1
-256 204.6343 1
-1024 200.4391 1
-4096 210.9571 1
+1 106.7473 1
+4 140.1587 1
+16 151.0971 1
+64 153.6398 1
+256 152.5249 1
+1024 138.5250 1
+4096 142.5613 1
 EOD
 set output 'docs/data/bench/time_vs_lights.png.tmp'
 set multiplot layout 2,3 title 'Median ms per frame against light count, 800x800, llvmpipe (LLVM 15.0.6, 256 bits) (log-log; ringed marks: extrapolated)'
@@ -414,129 +414,129 @@ set key top left
 set xlabel 'lights'
 set ylabel 'ms per frame'
 set title 'default'
-plot $t_0_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_0_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
-     $t_0_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_0_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
-     $t_0_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_0_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
-     $t_0_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_0_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
-     $t_0_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_0_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
-     $t_0_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_0_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_0_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_0_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
-     $t_0_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_0_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_0_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_0_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
-     $t_0_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_0_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_0_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_0_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
-     $t_0_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_0_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_0_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_0_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
+plot $t_0_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_0_0 using 1:2 with lines lc rgb '#377eb8' notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_0_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_0_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_0_1 using 1:2 with lines lc rgb '#e41a1c' notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_0_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_0_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_0_2 using 1:2 with lines lc rgb '#808080' notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_0_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_0_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_0_3 using 1:2 with lines lc rgb '#ff7f00' notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_0_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_0_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_0_4 using 1:2 with lines lc rgb '#a65628' notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_0_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_0_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_0_5 using 1:2 with lines lc rgb '#f781bf' notitle, $t_0_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_0_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_0_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_0_6 using 1:2 with lines lc rgb '#000000' notitle, $t_0_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_0_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_0_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_0_7 using 1:2 with lines lc rgb '#17becf' notitle, $t_0_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_0_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_0_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_0_8 using 1:2 with lines lc rgb '#1a237e' notitle, $t_0_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_0_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 set title 'city'
-plot $t_1_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_1_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
-     $t_1_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_1_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
-     $t_1_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_1_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
-     $t_1_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_1_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
-     $t_1_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_1_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
-     $t_1_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_1_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_1_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_1_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
-     $t_1_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_1_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_1_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_1_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
-     $t_1_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_1_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_1_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_1_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
-     $t_1_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_1_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_1_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_1_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
+plot $t_1_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_1_0 using 1:2 with lines lc rgb '#377eb8' notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_1_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_1_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_1_1 using 1:2 with lines lc rgb '#e41a1c' notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_1_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_1_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_1_2 using 1:2 with lines lc rgb '#808080' notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_1_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_1_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_1_3 using 1:2 with lines lc rgb '#ff7f00' notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_1_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_1_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_1_4 using 1:2 with lines lc rgb '#a65628' notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_1_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_1_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_1_5 using 1:2 with lines lc rgb '#f781bf' notitle, $t_1_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_1_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_1_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_1_6 using 1:2 with lines lc rgb '#000000' notitle, $t_1_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_1_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_1_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_1_7 using 1:2 with lines lc rgb '#17becf' notitle, $t_1_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_1_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_1_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_1_8 using 1:2 with lines lc rgb '#1a237e' notitle, $t_1_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_1_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 set title 'bunnies'
-plot $t_2_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_2_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
-     $t_2_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_2_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
-     $t_2_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_2_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
-     $t_2_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_2_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
-     $t_2_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_2_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
-     $t_2_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_2_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_2_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_2_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
-     $t_2_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_2_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_2_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_2_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
-     $t_2_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_2_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_2_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_2_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
-     $t_2_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_2_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_2_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_2_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
+plot $t_2_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_2_0 using 1:2 with lines lc rgb '#377eb8' notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_2_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_2_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_2_1 using 1:2 with lines lc rgb '#e41a1c' notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_2_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_2_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_2_2 using 1:2 with lines lc rgb '#808080' notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_2_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_2_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_2_3 using 1:2 with lines lc rgb '#ff7f00' notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_2_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_2_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_2_4 using 1:2 with lines lc rgb '#a65628' notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_2_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_2_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_2_5 using 1:2 with lines lc rgb '#f781bf' notitle, $t_2_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_2_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_2_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_2_6 using 1:2 with lines lc rgb '#000000' notitle, $t_2_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_2_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_2_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_2_7 using 1:2 with lines lc rgb '#17becf' notitle, $t_2_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_2_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_2_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_2_8 using 1:2 with lines lc rgb '#1a237e' notitle, $t_2_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_2_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 set title 'sphere'
-plot $t_3_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_3_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
-     $t_3_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_3_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
-     $t_3_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_3_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
-     $t_3_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_3_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
-     $t_3_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_3_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
-     $t_3_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_3_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_3_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_3_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
-     $t_3_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_3_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_3_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_3_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
-     $t_3_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_3_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_3_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_3_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
-     $t_3_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_3_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_3_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_3_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
+plot $t_3_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_3_0 using 1:2 with lines lc rgb '#377eb8' notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_3_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_3_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_3_1 using 1:2 with lines lc rgb '#e41a1c' notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_3_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_3_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_3_2 using 1:2 with lines lc rgb '#808080' notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_3_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_3_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_3_3 using 1:2 with lines lc rgb '#ff7f00' notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_3_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_3_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_3_4 using 1:2 with lines lc rgb '#a65628' notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_3_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_3_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_3_5 using 1:2 with lines lc rgb '#f781bf' notitle, $t_3_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_3_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_3_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_3_6 using 1:2 with lines lc rgb '#000000' notitle, $t_3_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_3_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_3_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_3_7 using 1:2 with lines lc rgb '#17becf' notitle, $t_3_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_3_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_3_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_3_8 using 1:2 with lines lc rgb '#1a237e' notitle, $t_3_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_3_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 set title 'teapots'
-plot $t_4_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_4_0 using 1:2 with lines lc rgb '#377eb8' pt 7 notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
-     $t_4_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_4_1 using 1:2 with lines lc rgb '#e41a1c' pt 5 notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
-     $t_4_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_4_2 using 1:2 with lines lc rgb '#808080' pt 5 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
-     $t_4_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_4_3 using 1:2 with lines lc rgb '#ff7f00' pt 13 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
-     $t_4_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_4_4 using 1:2 with lines lc rgb '#a65628' pt 15 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
-     $t_4_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_4_5 using 1:2 with lines lc rgb '#f781bf' pt 1 notitle, $t_4_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_4_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
-     $t_4_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_4_6 using 1:2 with lines lc rgb '#000000' pt 2 notitle, $t_4_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_4_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
-     $t_4_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_4_7 using 1:2 with lines lc rgb '#17becf' pt 3 notitle, $t_4_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_4_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
-     $t_4_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_4_8 using 1:2 with lines lc rgb '#1a237e' pt 7 notitle, $t_4_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_4_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
+plot $t_4_0 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#377eb8' pt 7 title 'forward-naive', $t_4_0 using 1:2 with lines lc rgb '#377eb8' notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 6 ps 2.5 notitle, $t_4_0 using 1:(($3)>0?NaN:$2) with points lc rgb '#377eb8' pt 7 notitle, \
+     $t_4_1 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#e41a1c' pt 5 title 'forward', $t_4_1 using 1:2 with lines lc rgb '#e41a1c' notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 6 ps 2.5 notitle, $t_4_1 using 1:(($3)>0?NaN:$2) with points lc rgb '#e41a1c' pt 5 notitle, \
+     $t_4_2 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#808080' pt 5 title 'forward-plus', $t_4_2 using 1:2 with lines lc rgb '#808080' notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 6 ps 2.5 notitle, $t_4_2 using 1:(($3)>0?NaN:$2) with points lc rgb '#808080' pt 5 notitle, \
+     $t_4_3 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#ff7f00' pt 13 title 'deferred-fullscreen', $t_4_3 using 1:2 with lines lc rgb '#ff7f00' notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 6 ps 2.5 notitle, $t_4_3 using 1:(($3)>0?NaN:$2) with points lc rgb '#ff7f00' pt 13 notitle, \
+     $t_4_4 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#a65628' pt 15 title 'deferred-volumes', $t_4_4 using 1:2 with lines lc rgb '#a65628' notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 6 ps 2.5 notitle, $t_4_4 using 1:(($3)>0?NaN:$2) with points lc rgb '#a65628' pt 15 notitle, \
+     $t_4_5 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#f781bf' pt 1 title 'deferred-volumes-windowed', $t_4_5 using 1:2 with lines lc rgb '#f781bf' notitle, $t_4_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 6 ps 2.5 notitle, $t_4_5 using 1:(($3)>0?NaN:$2) with points lc rgb '#f781bf' pt 1 notitle, \
+     $t_4_6 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#000000' pt 2 title 'deferred-stencil', $t_4_6 using 1:2 with lines lc rgb '#000000' notitle, $t_4_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 6 ps 2.5 notitle, $t_4_6 using 1:(($3)>0?NaN:$2) with points lc rgb '#000000' pt 2 notitle, \
+     $t_4_7 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#17becf' pt 3 title 'deferred-tiled', $t_4_7 using 1:2 with lines lc rgb '#17becf' notitle, $t_4_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 6 ps 2.5 notitle, $t_4_7 using 1:(($3)>0?NaN:$2) with points lc rgb '#17becf' pt 3 notitle, \
+     $t_4_8 using 1:(($3)>0?$2:NaN) with linespoints lc rgb '#1a237e' pt 7 title 'deferred-clustered', $t_4_8 using 1:2 with lines lc rgb '#1a237e' notitle, $t_4_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 6 ps 2.5 notitle, $t_4_8 using 1:(($3)>0?NaN:$2) with points lc rgb '#1a237e' pt 7 notitle
 unset multiplot
 $e_0 << EOD
 EOD
 $e_1 << EOD
-7.22861 1038.3986 0.0144153 0.5
-11.4784 1180.3355 0.021697 1
-14.9631 1088.8960 0.0270504 2
-18.982 1313.6329 0.0324618 5
-21.3178 1117.0870 0.035426 10
-23.4325 960.1375 0.0381214 20
-23.9771 1191.1116 0.0388776 32
+7.22861 1096.4207 0.0144153 0.5
+11.4784 999.1673 0.021697 1
+14.9631 897.0411 0.0270504 2
+18.982 1091.6362 0.0324618 5
+21.3178 926.7460 0.035426 10
+23.4325 1034.5906 0.0381214 20
+23.9771 904.9815 0.0388776 32
 EOD
 $e_2 << EOD
-7.22861 488.0715 0.0144153 0.5
-11.4784 250.9398 0.021697 1
-14.9631 106.8420 0.0270504 2
-18.982 60.7845 0.0324618 5
-21.3178 41.9073 0.035426 10
-23.4325 31.9912 0.0381214 20
-23.9771 24.7504 0.0388776 32
+7.22861 481.8110 0.0144153 0.5
+11.4784 203.6997 0.021697 1
+14.9631 113.7557 0.0270504 2
+18.982 57.2785 0.0324618 5
+21.3178 39.4195 0.035426 10
+23.4325 29.8744 0.0381214 20
+23.9771 30.6441 0.0388776 32
 EOD
 $e_3 << EOD
-7.28246 1159.9639 nan 0.5
-11.5296 1187.2779 nan 1
-15.0112 1233.1366 nan 2
-19.0165 1262.4569 nan 5
-21.3264 1197.2009 nan 10
-23.421 1097.6345 nan 20
-23.9611 1267.0418 nan 32
+7.28246 1300.9303 nan 0.5
+11.5296 1087.3117 nan 1
+15.0112 955.9038 nan 2
+19.0165 1233.0082 nan 5
+21.3264 1119.5082 nan 10
+23.421 1182.1795 nan 20
+23.9611 1114.7238 nan 32
 EOD
 $e_4 << EOD
-7.49654 843.0165 0.0149296 0.5
-11.6106 456.3690 0.0219278 1
-15.0429 200.9564 0.0271806 2
-19.0262 101.4272 0.0325424 5
-21.33 68.7963 0.0354912 10
-23.4219 56.3662 0.0381763 20
-23.9616 43.5900 0.0389301 32
+7.49654 855.5918 0.0149296 0.5
+11.6106 337.1261 0.0219278 1
+15.0429 206.9540 0.0271806 2
+19.0262 107.9460 0.0325424 5
+21.33 69.8586 0.0354912 10
+23.4219 46.0694 0.0381763 20
+23.9616 43.4796 0.0389301 32
 EOD
 $e_5 << EOD
-11.6649 900.6039 0.0220537 0.5
-15.1021 410.4480 0.0273095 1
-18.1067 211.4416 0.0314571 2
-21.2168 100.6919 0.0354777 5
-22.9621 69.2562 0.0377154 10
-23.9982 54.6484 0.0390673 20
-24.2995 41.1821 0.0394997 32
+11.6649 868.2906 0.0220537 0.5
+15.1021 327.9899 0.0273095 1
+18.1067 222.8173 0.0314571 2
+21.2168 110.2553 0.0354777 5
+22.9621 65.6203 0.0377154 10
+23.9982 45.6392 0.0390673 20
+24.2995 43.1996 0.0394997 32
 EOD
 $e_6 << EOD
-7.50338 1206.4788 0.0149434 0.5
-11.6121 629.4505 0.0219304 1
-15.0432 319.2517 0.0271814 2
-19.0262 173.6488 0.0325425 5
-21.33 103.7808 0.0354912 10
-23.422 83.1976 0.0381763 20
-23.9616 64.4566 0.0389301 32
+7.50338 1097.6790 0.0149434 0.5
+11.6121 502.4400 0.0219304 1
+15.0432 265.4998 0.0271814 2
+19.0262 172.9677 0.0325425 5
+21.33 101.1252 0.0354912 10
+23.422 71.2633 0.0381763 20
+23.9616 67.5274 0.0389301 32
 EOD
 $e_7 << EOD
-7.28246 382.0304 nan 0.5
-11.5296 219.8035 nan 1
-15.0112 149.7916 nan 2
-19.0165 132.4281 nan 5
-21.3264 118.9858 nan 10
-23.421 112.3704 nan 20
-23.9611 101.3110 nan 32
+7.28246 352.4750 nan 0.5
+11.5296 175.9268 nan 1
+15.0112 165.8502 nan 2
+19.0165 128.6446 nan 5
+21.3264 113.4970 nan 10
+23.421 108.3158 nan 20
+23.9611 106.7817 nan 32
 EOD
 $e_8 << EOD
-7.28246 488.6783 0.0145279 0.5
-11.5296 254.7402 0.0217917 1
-15.0112 139.5937 0.0271301 2
-19.0165 82.0506 0.0325252 5
-21.3264 65.8170 0.0354808 10
-23.421 62.6000 0.0381688 20
-23.9611 46.4206 0.0389232 32
+7.28246 483.5418 0.0145279 0.5
+11.5296 200.5995 0.0217917 1
+15.0112 142.4778 0.0271301 2
+19.0165 83.4133 0.0325252 5
+21.3264 57.2624 0.0354808 10
+23.421 51.4941 0.0381688 20
+23.9611 51.8658 0.0389232 32
 EOD
 set output 'docs/data/bench/speed_vs_error.png.tmp'
 unset logscale
