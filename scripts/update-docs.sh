@@ -25,7 +25,7 @@
 # Each file starts with the same stamp (date, CPU, cores, GL renderer, commit, clock). The pages
 # embed sections of these files verbatim between <!-- generated: FILE#SECTION --> markers, and
 # tests/lessons/doc_generated.py fails when a page's copy differs from the file (--update refreshes them).
-# Takes about 50 minutes on 2 cores with llvmpipe (52 on 2026-12-02); --quick (a few minutes) is for trying the script.
+# Takes about 50 minutes on 2 cores with llvmpipe (51 for the run of 2026-12-02 18:29); --quick (a few minutes) is for trying the script.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
