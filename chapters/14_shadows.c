@@ -85,7 +85,7 @@ static struct {
 /* The atlas's options, checked against the context's largest texture. */
 static bool read_options(app *a, shadow_plan_desc *desc, GLenum *format, float *slope)
 {
-    double size = 4096, offset = atof(CHAPTER_14_NORMAL_OFFSET), bias = 2, shadows = -1;
+    double size = 0, offset = 0, bias = 0, shadows = -1; /* the parser fills them, from the defaults too */
     GLint max_size = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
     /* the parser checked every range but the context's own largest texture: past it, an input error too */

@@ -7,7 +7,7 @@
 # same shadows.glsl; their surface points differ in the last bits (the G-buffer's position from depth,
 # its normal octahedral-encoded), which moves a PCF comparison across a shadow's edge on a few pixels
 # (bilinear PCF taps, not snapped to texels, keep that change below a level: measured 0 pixels over on
-# the default and spots scenes). A wider filter needs a larger normal offset: its outer taps fall on the
+# the default scene, 5 on the spots). A wider filter needs a larger normal offset: its outer taps fall on the
 # receiver's own depth when it slopes away from the light, and a last-bit difference then flips them
 # (the default scene at --pcf 5: 187 pixels over with the default 0.25 texels, 1 with 1.5), so --pcf 3
 # and 5 are checked at --normal-offset 1.5 (docs/14_shadows.md, "Choosing the defaults").
@@ -56,7 +56,8 @@ function(chapter_14_tests)
                "spot|--scene@${S}/shadow_spot.scene"
                "contact|--scene@${S}/shadow_contact.scene" "grazing|--scene@${S}/shadow_grazing.scene"
                "inside|--scene@${S}/shadow_inside.scene" "camera_inside|--scene@${S}/shadow_camera_inside.scene"
-               "pcf3|--pcf@3@--normal-offset@1.5" "pcf5|--pcf@5@--normal-offset@1.5" "offset1.5|--normal-offset@1.5" "d16|--shadow-format@d16" "atlas512|--shadow-atlas@512")
+               "pcf3|--pcf@3@--normal-offset@1.5" "pcf5|--pcf@5@--normal-offset@1.5" "offset1.5|--normal-offset@1.5"
+               "d16|--shadow-format@d16" "atlas512|--shadow-atlas@512")
     course_case("${case}" name args)
     course_agreement_test(14_vs_forward_${name} 1 0.0001 ${C} ${args} VS ${C} --renderer forward ${args})
     course_agreement_test(14_forward_plus_${name} 0 0 ${C} --renderer forward-plus ${args}
