@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   cmake pkg-config gcc clang make
   libglfw3-dev libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri
-  python3-glad libstb-dev libcglm-dev libcmocka-dev libassimp-dev
+  python3-glad libstb-dev libcglm-dev libcmocka-dev libassimp-dev libcjson-dev
   glslang-tools xvfb xauth twm x11-utils gnuplot-nox
   assimp-testmodels
 )

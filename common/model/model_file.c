@@ -1,4 +1,5 @@
 /* model_file.c - see model_file.h. */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "model_file.h"
 
 #include <assimp/cfileio.h>
@@ -13,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <limits.h>
 #include <sys/stat.h>
 
 bool model_fail(char *why, size_t n, const char *fmt, ...)
@@ -44,12 +46,15 @@ bool model_limits_get(model_limits *lim, char *why, size_t n)
 {
     /* The upper ends keep every count inside mesh_data's int arithmetic (3 vertices a triangle,
      * 6 floats a vertex) and every file inside what one read can hold. */
-    long long bytes = MODEL_MAX_BYTES_DEFAULT, vertices = MODEL_MAX_VERTICES_DEFAULT, faces = MODEL_MAX_FACES_DEFAULT;
+    long long bytes = MODEL_MAX_BYTES_DEFAULT, vertices = MODEL_MAX_VERTICES_DEFAULT, faces = MODEL_MAX_FACES_DEFAULT,
+              megabytes = MODEL_MAX_MB_DEFAULT;
     if (!env_limit("COURSE_MODEL_MAX_BYTES", 1LL << 32, &bytes, why, n) ||
         !env_limit("COURSE_MODEL_MAX_VERTICES", 100000000, &vertices, why, n) ||
-        !env_limit("COURSE_MODEL_MAX_FACES", 100000000, &faces, why, n))
+        !env_limit("COURSE_MODEL_MAX_FACES", 100000000, &faces, why, n) ||
+        !env_limit("COURSE_MODEL_MAX_MB", 1LL << 20, &megabytes, why, n))
         return false;
-    *lim = (model_limits){.bytes = bytes, .vertices = (long)vertices, .faces = (long)faces};
+    *lim = (model_limits){
+        .bytes = bytes, .vertices = (long)vertices, .faces = (long)faces, .memory = megabytes << 20};
     return true;
 }
 
@@ -76,6 +81,27 @@ void model_quote(const char *text, char *out, size_t n)
         out[k++] = *p >= 0x20 && *p < 0x7f ? (char)*p : '?';
     }
     out[n ? k : 0] = '\0';
+}
+
+bool model_path_inside(const char *model, const char *path, long long *size, char *why, size_t n)
+{
+    char folder[PATH_MAX], target[PATH_MAX], dir[PATH_MAX];
+    const char *slash = strrchr(model, '/');
+    int length = !slash ? 1 : slash == model ? 1 : (int)(slash - model);
+    snprintf(dir, sizeof dir, "%.*s", length, slash ? model : ".");
+    struct stat st;
+    if (!realpath(dir, folder))
+        return model_fail(why, n, "the model's folder cannot be resolved (%s)", strerror(errno));
+    if (!realpath(path, target))
+        return model_fail(why, n, "no such file");
+    size_t k = strlen(folder);
+    if (strcmp(folder, "/") != 0 && (strncmp(target, folder, k) != 0 || target[k] != '/'))
+        return model_fail(why, n, "it lies outside the model's folder (files are read from the model's folder "
+                          "and below)");
+    if (stat(target, &st) != 0 || !S_ISREG(st.st_mode))
+        return model_fail(why, n, "not a regular file");
+    *size = (long long)st.st_size;
+    return true;
 }
 
 char *model_read_file(const char *path, const model_limits *lim, size_t *size, char *why, size_t n)
@@ -113,6 +139,8 @@ typedef struct io_state {
     long long budget, used; /* bytes of the named files read so far */
     bool over;
     bool guessing; /* Assimp turned to guessing the format from the content: every open fails */
+    bool outside;  /* a file it names lies outside the model's folder, or is no regular file */
+    struct io_file *open; /* files Assimp has not closed: it throws past its closes on some errors */
 } io_state;
 
 typedef struct io_file {
@@ -122,6 +150,7 @@ typedef struct io_file {
     char *owned;
     FILE *disk;
     size_t size, pos;
+    struct io_file *next; /* in io_state.open */
 } io_file;
 
 static io_file *io_of(struct aiFile *f) { return (io_file *)(void *)f->UserData; }
@@ -186,7 +215,15 @@ static struct aiFile *io_open(struct aiFileIO *fio, const char *name, const char
     struct stat st;
     bool model = strcmp(name, io->name) == 0;
     if (!model) {
-        if (!io->siblings || stat(name, &st) != 0 || !S_ISREG(st.st_mode) || !(disk = fopen(name, "rb")))
+        char reason[160];
+        long long bytes;
+        if (!io->siblings)
+            return NULL;
+        if (!model_path_inside(io->name, name, &bytes, reason, sizeof reason)) {
+            io->outside |= strstr(reason, "outside") != NULL;
+            return NULL;
+        }
+        if (stat(name, &st) != 0 || !S_ISREG(st.st_mode) || !(disk = fopen(name, "rb")))
             return NULL;
         if (st.st_size > io->budget) { /* never one Assimp could read */
             io->over = true;
@@ -205,13 +242,20 @@ static struct aiFile *io_open(struct aiFileIO *fio, const char *name, const char
     f->disk = disk;
     f->data = model ? io->data : NULL;
     f->size = model ? io->size : (size_t)st.st_size;
+    f->next = io->open;
+    io->open = f;
     return &f->file;
 }
 
 static void io_close(struct aiFileIO *fio, struct aiFile *file)
 {
-    (void)fio;
+    io_state *io = (io_state *)(void *)fio->UserData;
     io_file *f = io_of(file);
+    for (io_file **p = &io->open; *p; p = &(*p)->next)
+        if (*p == f) {
+            *p = f->next;
+            break;
+        }
     if (f->disk)
         fclose(f->disk);
     free(f->owned);
@@ -286,8 +330,20 @@ static bool check_vertices(const struct aiScene *sc, char *why, size_t n)
     return true;
 }
 
-const struct aiScene *model_import(const char *name, const char *data, size_t size, bool siblings,
-                                   const model_limits *lim, unsigned post, char *why, size_t n)
+/* One aiImportFileEx; what Assimp left open (it throws past its own closes on some short files)
+ * is closed after it. */
+static const struct aiScene *import_with(const char *name, unsigned flags, struct aiFileIO *fio, io_state *io)
+{
+    importing = io;
+    const struct aiScene *sc = aiImportFileEx(name, flags, fio);
+    importing = NULL;
+    while (io->open)
+        io_close(fio, &io->open->file);
+    return sc;
+}
+
+static const struct aiScene *import_bytes(const char *name, const char *data, size_t size, bool siblings,
+                                          const model_limits *lim, unsigned post, char *why, size_t n)
 {
     io_state io = {.name = name, .data = data, .size = size, .siblings = siblings, .budget = lim->bytes};
     struct aiFileIO fio = {io_open, io_close, (aiUserData)(void *)&io};
@@ -303,9 +359,13 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
         attached = true;
     }
     assimp_warning[0] = '\0';
-    importing = &io;
-    const struct aiScene *sc = aiImportFileEx(name, aiProcess_ValidateDataStructure, &fio);
-    importing = NULL;
+    const struct aiScene *sc = import_with(name, aiProcess_ValidateDataStructure, &fio, &io);
+    if (io.outside) {
+        if (sc)
+            aiReleaseImport(sc);
+        model_fail(why, n, "a file it names lies outside the model's folder");
+        return NULL;
+    }
     if (io.guessing) {
         if (sc)
             aiReleaseImport(sc);
@@ -351,10 +411,8 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
      * aiApplyPostProcessing on the first import would save the read, but when a step fails
      * (FindInvalidData leaving no mesh) Assimp 5.2 releases the scene through freed memory. */
     io.used = 0;
-    importing = &io;
-    const struct aiScene *done = aiImportFileEx(name, aiProcess_ValidateDataStructure | post, &fio);
-    importing = NULL;
-    if (!done || io.over) {
+    const struct aiScene *done = import_with(name, aiProcess_ValidateDataStructure | post, &fio, &io);
+    if (!done || io.over || io.outside) {
         model_quote(done ? "" : aiGetErrorString(), quoted, sizeof quoted);
         if (done)
             aiReleaseImport(done);
@@ -362,4 +420,20 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
         return NULL;
     }
     return done;
+}
+
+const struct aiScene *model_import(const char *name, const char *data, size_t size, bool siblings,
+                                   const model_limits *lim, unsigned post, char *why, size_t n)
+{
+    const char *format = model_format_of(name);
+    if (!format || (strcmp(format, "gltf") != 0 && strcmp(format, "glb") != 0))
+        return import_bytes(name, data, size, siblings, lim, post, why, n);
+    /* glTF: Assimp reads the document model_gltf_check checked, never the file's own bytes. */
+    size_t checked_size;
+    char *checked = model_gltf_check(name, data, size, siblings, lim, &checked_size, why, n);
+    if (!checked)
+        return NULL;
+    const struct aiScene *sc = import_bytes(name, checked, checked_size, siblings, lim, post, why, n);
+    free(checked);
+    return sc;
 }

@@ -18,6 +18,16 @@
  *                                      file `name` is read from `data`, other files it names (an
  *                                      OBJ's .mtl, a glTF's .bin) from disk when `siblings`, each
  *                                      a regular file and all of them within lim->bytes
+ *   model_gltf_check(name, data, size, siblings, lim, out_size, why, n)
+ *                                      a glTF 2.0 file (.gltf, or a .glb's chunks) checked before
+ *                                      Assimp sees it (model_gltf.c): the JSON's depth and keys, every
+ *                                      index, every accessor's bytes inside its view and buffer, the
+ *                                      files it names, the counts and the memory its import would
+ *                                      take; the checked document as Assimp is to read it (malloc'd,
+ *                                      *out_size bytes), or NULL with *why. model_import calls it.
+ *   model_path_inside(model, path, size, why, n)
+ *                                      whether `path` is a regular file inside the model's folder once
+ *                                      `..` and symbolic links are resolved (*size: its bytes)
  *   model_quote(text, out, n)          a message of Assimp's as one printable line, cut short
  *   model_read_file(path, lim, size, why, n)
  *                                      the whole of a regular file of at most lim->bytes, malloc'd
@@ -40,11 +50,25 @@
 #define MODEL_MAX_VERTICES_DEFAULT 4000000L
 #define MODEL_MAX_FACES_DEFAULT 4000000L
 #define MODEL_QUOTE_MAX 160 /* characters of an Assimp message kept */
+/* What one import of a model may take (COURSE_MODEL_MAX_MB), estimated before Assimp runs from what
+ * its meshes declare, at the bytes Assimp 5.2 was measured to hold per vertex and per face (two
+ * imports, post-processing included: tests/robust/hostile_gltf.py prints the measurement). */
+#define MODEL_MAX_MB_DEFAULT 512LL
+#define MODEL_BYTES_PER_VERTEX 160
+#define MODEL_BYTES_PER_FACE 64
+/* glTF's structure: nodes and their nesting (Assimp recurses through both), the JSON's nesting,
+ * and lights (Assimp 5.2's validation compares every light with every other one). */
+#define MODEL_NODES_MAX 65536
+#define MODEL_DEPTH_MAX 64
+#define MODEL_JSON_DEPTH_MAX 32
+#define MODEL_LIGHTS_MAX 4096
+#define MODEL_PATH_MAX 4096
 
 typedef struct model_limits {
     long long bytes; /* the file, and separately all the files it names */
     long vertices;   /* declared in a header, and in the imported meshes together */
     long faces;
+    long long memory; /* bytes one import may take, estimated (MODEL_MAX_MB_DEFAULT) */
 } model_limits;
 
 struct aiScene;
@@ -55,6 +79,9 @@ bool model_prescan(const char *data, size_t size, const char *format, const mode
                    size_t n);
 const struct aiScene *model_import(const char *name, const char *data, size_t size, bool siblings,
                                    const model_limits *lim, unsigned post, char *why, size_t n);
+char *model_gltf_check(const char *name, const char *data, size_t size, bool siblings, const model_limits *lim,
+                       size_t *out_size, char *why, size_t n);
+bool model_path_inside(const char *model, const char *path, long long *size, char *why, size_t n);
 void model_quote(const char *text, char *out, size_t n);
 char *model_read_file(const char *path, const model_limits *lim, size_t *size, char *why, size_t n);
 /* The pre-scan (model_scan.c) and the import (model_file.c) say what is wrong the same way:

@@ -8,7 +8,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include <stb_image.h>
 
@@ -73,16 +72,21 @@ bool model_image_check(const struct aiScene *sc, const char *model, const char *
         int dir = slash ? (int)(slash - model) + 1 : 0;
         if (snprintf(out->path, sizeof out->path, "%.*s%s", dir, model, rel) >= (int)sizeof out->path)
             return model_fail(why, n, "%s: its path is too long", shown);
-        struct stat st;
         unsigned char head[8] = {0};
+        char reason[160];
+        long long bytes;
         FILE *f = NULL;
-        if (stat(out->path, &st) != 0 || !S_ISREG(st.st_mode) || !(f = fopen(out->path, "rb")))
+        /* inside the model's folder once `..` and links are resolved, and a regular file, before it
+         * is opened (a named pipe would block the open) */
+        if (!model_path_inside(model, out->path, &bytes, reason, sizeof reason))
+            return model_fail(why, n, "%s: %s", shown, reason);
+        if (!(f = fopen(out->path, "rb")))
             return model_fail(why, n, "%s: no such file", shown);
         size_t got = fread(head, 1, sizeof head, f);
         fclose(f);
-        if (st.st_size > max_bytes)
+        if (bytes > max_bytes)
             return model_fail(why, n, "%s: %lld bytes, more than the limit of %lld (COURSE_MODEL_MAX_BYTES)",
-                              shown, (long long)st.st_size, max_bytes);
+                              shown, bytes, max_bytes);
         if (!image_kind_ok(head, got))
             return model_fail(why, n, "%s: not a PNG or JPEG image (the course decodes those two)", shown);
         if (!stbi_info(out->path, &w, &h, &comp))

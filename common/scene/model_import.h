@@ -21,21 +21,20 @@
  *                              same clock tick; a kept import is never stale otherwise (its path,
  *                              size and modification time are checked on every use)
  *
- * Limits, beyond model_file.h's: MODEL_NODES_MAX nodes, MODEL_DEPTH_MAX levels of them,
- * MODEL_OBJECTS_MAX node-mesh pairs, images of at most MODEL_IMAGE_SIDE_MAX texels a side and
+ * Limits, beyond model_file.h's (MODEL_NODES_MAX nodes, MODEL_DEPTH_MAX levels of them, checked
+ * again here on what Assimp made), MODEL_OBJECTS_MAX node-mesh pairs, images of at most MODEL_IMAGE_SIDE_MAX texels a side and
  * MODEL_TEXELS_MAX texels in all (what decoding them may allocate is bounded before any is decoded).
  */
 #ifndef COMMON_MODEL_IMPORT_H
 #define COMMON_MODEL_IMPORT_H
 
+#include "model_file.h"
 #include "model_image.h"
 #include "scene.h"
 
 #include <stdbool.h>
 #include <stddef.h>
 
-#define MODEL_NODES_MAX 65536
-#define MODEL_DEPTH_MAX 64
 #define MODEL_OBJECTS_MAX 65536
 #define MODEL_TEXELS_MAX (1LL << 28) /* 1 GiB as RGBA8 */
 /* The attenuation a glTF light gets: 1 / (KC + d^2), the file's inverse square law kept finite at

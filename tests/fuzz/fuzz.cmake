@@ -50,7 +50,7 @@ if(COURSE_FUZZ)
     ${CMAKE_SOURCE_DIR}/common/scene/scene_lights.c
     ${CMAKE_SOURCE_DIR}/common/scene/scene_model.c ${CMAKE_SOURCE_DIR}/common/scene/model_import.c
     ${CMAKE_SOURCE_DIR}/common/scene/model_image.c
-    ${CMAKE_SOURCE_DIR}/common/model/model_file.c ${CMAKE_SOURCE_DIR}/common/model/model_scan.c
+    ${CMAKE_SOURCE_DIR}/common/model/model_file.c ${CMAKE_SOURCE_DIR}/common/model/model_scan.c ${CMAKE_SOURCE_DIR}/common/model/model_gltf.c
     ${CMAKE_SOURCE_DIR}/common/scene/mesh_data.c ${CMAKE_SOURCE_DIR}/common/scene/mesh_tangents.c
     ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)
   set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/platform/cli.c ${CMAKE_SOURCE_DIR}/common/platform/cli_help.c ${CMAKE_SOURCE_DIR}/common/platform/input_script.c
@@ -64,7 +64,7 @@ if(COURSE_FUZZ)
     add_executable(fuzz_${target} ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_${target}.c
                    ${COURSE_FUZZ_SOURCES_${target}})
     target_include_directories(fuzz_${target} PRIVATE ${COMMON_INCLUDE_DIRS})
-    target_link_libraries(fuzz_${target} PRIVATE PkgConfig::CGLM PkgConfig::ASSIMP PkgConfig::STB Threads::Threads m)
+    target_link_libraries(fuzz_${target} PRIVATE PkgConfig::CGLM PkgConfig::ASSIMP PkgConfig::STB PkgConfig::CJSON Threads::Threads m)
     target_compile_options(fuzz_${target} PRIVATE -fsanitize=fuzzer,address,undefined
                            -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
     target_link_options(fuzz_${target} PRIVATE -fsanitize=fuzzer,address,undefined)

@@ -18,7 +18,7 @@ src=$1 target=$2 seconds=$3 out=$4
 fuzz=$src/tests/fuzz
 case $target in
     scene | model) # the scene parser reads glTF files (the model directive), so both need the model code
-        sources="$src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_materials.c $src/common/scene/scene_lights.c $src/common/scene/scene_model.c $src/common/scene/model_import.c $src/common/scene/model_image.c $src/common/scene/mesh_data.c $src/common/scene/mesh_tangents.c $src/common/model/model_file.c $src/common/model/model_scan.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
+        sources="$src/common/scene/scene.c $src/common/scene/scene_parser.c $src/common/scene/scene_directives.c $src/common/scene/scene_materials.c $src/common/scene/scene_lights.c $src/common/scene/scene_model.c $src/common/scene/model_import.c $src/common/scene/model_image.c $src/common/scene/mesh_data.c $src/common/scene/mesh_tangents.c $src/common/model/model_file.c $src/common/model/model_scan.c $src/common/model/model_gltf.c $src/common/base/log.c $src/common/base/data_dir.c" ;;
     cli) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/platform/cli_help.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c $src/common/base/data_dir.c $src/common/base/progress.c $src/common/base/image.c" ;;
     script) sources="$src/common/platform/input_script.c $src/common/platform/input.c $src/common/platform/cli.c $src/common/platform/cli_help.c $src/common/base/gbuffer_layout_names.c $src/common/platform/keys.c $src/common/base/log.c $src/common/base/data_dir.c $src/common/base/progress.c $src/common/base/image.c" ;;
     *) echo "unknown fuzz target '$target'" >&2; exit 2 ;;
@@ -26,7 +26,7 @@ esac
 
 libs="-pthread"
 case $target in
-    scene | model) libs="$libs $(pkg-config --libs assimp stb)" ;;
+    scene | model) libs="$libs $(pkg-config --libs assimp stb libcjson)" ;;
     cli | script) libs="$libs $(pkg-config --libs stb)" ;; # common/base/image.c: a script's screenshot format
 esac
 cc=${FUZZ_CC:-clang}
