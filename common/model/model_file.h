@@ -50,9 +50,9 @@
 #define MODEL_MAX_VERTICES_DEFAULT 4000000L
 #define MODEL_MAX_FACES_DEFAULT 4000000L
 #define MODEL_QUOTE_MAX 160 /* characters of an Assimp message kept */
-/* What one import of a model may take (COURSE_MODEL_MAX_MB), estimated before Assimp runs from what
- * its meshes declare, at the bytes Assimp 5.2 was measured to hold per vertex and per face (two
- * imports, post-processing included: tests/robust/hostile_gltf.py prints the measurement). */
+/* What one glTF import may take (COURSE_MODEL_MAX_MB), estimated before Assimp runs from what its
+ * meshes declare: about twice the bytes a vertex measured (scene_check 77, chapter 11 60 beyond its
+ * own: docs/scene-format.md, "Files from elsewhere"), so that a model accepted fits. */
 #define MODEL_MAX_MB_DEFAULT 512LL
 #define MODEL_BYTES_PER_VERTEX 160
 #define MODEL_BYTES_PER_FACE 64

@@ -42,11 +42,18 @@ static void check_mesh(const mesh_data *m)
 
 /* The model directive reads a file from disk (with the files it names beside it): the bytes go to
  * a file of a folder made once, and every mesh of what it accepts is built. */
+static char dir[64];
+
+/* The folder goes when the run ends (each file in it is removed after its input). */
+static void remove_dir(void) { rmdir(dir); }
+
 static void import_gltf(const char *name, const uint8_t *data, size_t size)
 {
-    static char dir[64];
-    if (!dir[0] && !mkdtemp(strcpy(dir, "/tmp/fuzz_model_XXXXXX")))
-        abort();
+    if (!dir[0]) {
+        if (!mkdtemp(strcpy(dir, "/tmp/fuzz_model_XXXXXX")))
+            abort();
+        atexit(remove_dir);
+    }
     char path[128];
     snprintf(path, sizeof path, "%s/%s", dir, name);
     FILE *f = fopen(path, "wb");

@@ -79,8 +79,16 @@ echo "ok   replayed ${#replay[@]} saved inputs"
 # libFuzzer still prints its own report and the sanitizers' on a crash.
 mkdir -p "$work/corpus"
 cp "$fuzz/corpus_$target"/* "$work/corpus/"
+# The model target also starts from Debian's glTF 2.0 samples that hold all their bytes (a .glb, or
+# a .gltf with data URIs: the target writes one file), its format byte first (fuzz_model.c).
+if [ "$target" = model ] && [ -d /usr/share/assimp/models/glTF2 ]; then
+    while IFS= read -r -d '' f; do
+        case $f in *.glb) byte='\005' ;; *) grep -q '"uri" *: *"[^d]' "$f" && continue; byte='\004' ;; esac
+        { printf "$byte"; cat "$f"; } >"$work/corpus/debian_$(basename "$(dirname "$f")")_$(basename "$f")"
+    done < <(find /usr/share/assimp/models/glTF2 \( -name '*.glb' -o -name '*.gltf' \) -size -64k -print0)
+fi
 "$bin" "$work/corpus" -dict="$fuzz/$target.dict" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-    -max_len=4096 -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$out/" >"$work/fuzz.log" 2>&1
+    -max_len="${FUZZ_MAX_LEN:-4096}" -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$out/" >"$work/fuzz.log" 2>&1
 rc=$?
 grep -E "^#[0-9]+.*DONE|stat::number_of_executed_units|stat::peak_rss_mb" "$work/fuzz.log"
 if [ $rc -ne 0 ]; then
