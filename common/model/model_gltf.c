@@ -659,8 +659,9 @@ static bool check_skins_scenes(gltf *g)
             !field_index(g, s, "skeleton", false, &g->nodes, &k, "skin", i) ||
             !field_index(g, s, "inverseBindMatrices", false, &g->accessors, &k, "skin", i))
             return false;
-        if (k < 0)
-            continue;
+        if (k < 0) /* optional in glTF, but Assimp 5.2 reads them through a null pointer when absent */
+            return model_fail(g->why, g->n, "skin %lld has no inverseBindMatrices (Assimp 5.2 cannot read a skin "
+                              "without them)", i);
         const cJSON *a = g->accessors.at[k], *type = cJSON_GetObjectItemCaseSensitive(a, "type");
         long long ctype;
         field_whole(g, a, "componentType", -1, GLTF_WHOLE_MAX, &ctype, "accessor", k);

@@ -186,6 +186,8 @@ def cases(outside):
         ("sparse_index", doc("a.gltf", sparse(1000)), "sparse index 0 is 1000"),
         ("skin_matrices_overrun", doc("a.gltf", skin(2, 2, 64)), "end at byte"),
         ("skin_too_few_matrices", doc("a.gltf", skin(3, 1, 64)), "inverseBindMatrices"),
+        ("skin_no_matrices", doc("a.gltf", changed(skin(2, 2, 128), lambda g: g["skins"][0].pop(
+            "inverseBindMatrices"))), "has no inverseBindMatrices"),
         # structure: depth, counts, cycles
         ("nested_nodes", doc("a.gltf", nested_nodes(20000)), "nested more than 64 deep"),
         ("node_two_parents", doc("a.gltf", changed(triangle(), lambda g: g.update(
