@@ -22,6 +22,13 @@ function(chapter_17_tests)
   course_golden_test(17_ssao_ao_blurred ${C} 1 0.0001 --view ao-blurred)
   course_golden_test(17_ssao_boxes ${C} 1 0.0001 --view ao-blurred --scene ${S}/ssao_boxes.scene)
   course_golden_test(17_ssao_samples4 ${C} 1 0.0001 --view ao --ao-samples 4 --ao-blur 0)
+  # Exercise 1's targets: the same 4 directions blurred over 2 x 2 and 4 x 4 pixels (the noise tile's
+  # size: the pattern goes). The standard depth's picture is kept too: the golden before the
+  # chapter's reversed-Z default, to the byte (that default moved one pixel, (154,138), by 63/255).
+  course_golden_test(17_ssao_samples4_blur1 ${C} 1 0.0001 --view ao-blurred --ao-samples 4 --ao-blur 1)
+  course_golden_test(17_ssao_samples4_blur2 ${C} 1 0.0001 --view ao-blurred --ao-samples 4 --ao-blur 2)
+  course_golden_test(17_ssao_samples4_compact ${C} 1 0.0001 --view ao --ao-samples 4 --ao-blur 0
+    --gbuffer compact)
   course_golden_test(17_ssao_radius2 ${C} 1 0.0001 --view ao-blurred --ao-radius 2)
 
   # Forward gets it too: with SSAO on, deferred and forward (and Forward+) agree on the lit picture,

@@ -137,3 +137,15 @@ function(chapter_18_tests)
     PASS_REGULAR_EXPRESSION "G-buffer layout compact cannot hold the scene's metallic-roughness materials")
 endfunction()
 chapter_18_tests()
+
+# The page's exercise 4, performed: the furnace built without the diffuse term's Fresnel weight
+# (-DFURNACE_DIFFUSE_WEIGHT=0) must fail and print the figures the page gives as its target.
+add_executable(test_brdf_furnace_exercise4 ${CMAKE_SOURCE_DIR}/tests/unit/test_brdf_furnace.c)
+target_compile_definitions(test_brdf_furnace_exercise4 PRIVATE FURNACE_DIFFUSE_WEIGHT=0)
+target_link_libraries(test_brdf_furnace_exercise4 PRIVATE common_core PkgConfig::CMOCKA)
+set_target_properties(test_brdf_furnace_exercise4 PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+add_test(NAME pages.18_exercise_4
+  COMMAND ${BASH} -c "out=$(\"$0\" 2>&1); rc=$?; echo \"$out\" | grep -v '^roughness'; [ $rc -ne 0 ] && grep -qF \"$1\" <<<\"$out\""
+          $<TARGET_FILE:test_brdf_furnace_exercise4>
+          "most returned: 1.8401 (roughness 0, metallic 0, view 88 deg); 101 of 189 cases over 1 + 0.001")
+set_tests_properties(pages.18_exercise_4 PROPERTIES LABELS unit)
