@@ -26,6 +26,14 @@ function(chapter_14_tests)
   course_golden_test(14_shadows_pcf3 ${C} 1 0.0001 --pcf 3 --normal-offset 1.5)
   course_golden_test(14_shadows_visibility ${C} 1 0.0001 --scene ${S}/shadow_one_light.scene --view visibility)
   course_golden_test(14_shadows_contact ${C} 1 0.0001 --scene ${S}/shadow_contact.scene)
+  # Exercise 2's pictures and its counts, performed (tests/chapters/run_shadow_exercise.sh).
+  course_golden_test(14_shadows_grazing ${C} 1 0.0001 --scene ${S}/shadow_grazing.scene)
+  course_golden_test(14_shadows_grazing_acne ${C} 1 0.0001 --scene ${S}/shadow_grazing.scene --normal-offset 0
+    --slope-bias 0)
+  add_test(NAME pages.14_exercise_2
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/chapters/run_shadow_exercise.sh $<TARGET_FILE:${C}>
+            $<TARGET_FILE:imgdiff> ${COURSE_TEST_OUT}/14_exercise_2 ${S})
+  set_tests_properties(pages.14_exercise_2 PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
   # The window's views of the atlas: each tile's depth in its light's importance colour, and a disc
   # per light in the same colours over the picture.
   course_golden_test(14_shadows_atlas ${C} 1 0.0001 --scene ${A}/teapots.scene --view atlas)
