@@ -1,6 +1,8 @@
 /* data_dir.c - see data_dir.h. */
 #include "data_dir.h"
 
+#include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -134,4 +136,28 @@ bool data_dir_find_output(const char *given, char *out, size_t size, char *why, 
         return false;
     }
     return true;
+}
+
+/* An open() without O_NONBLOCK waits for a writer on a named pipe (forever, for a FIFO nobody opens):
+ * so the file is opened non-blocking and its kind read from the open descriptor, not from the path. */
+FILE *data_dir_open_input(const char *path, const char **why)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) {
+        *why = strerror(errno);
+        return NULL;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        *why = "not a regular file";
+        close(fd);
+        return NULL;
+    }
+    int flags = fcntl(fd, F_GETFL);
+    FILE *f = flags >= 0 && fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) == 0 ? fdopen(fd, "rb") : NULL;
+    if (!f) {
+        *why = strerror(errno);
+        close(fd);
+    }
+    return f;
 }

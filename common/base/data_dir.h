@@ -17,12 +17,18 @@
  *                                        data_dir_find finds an input, the file's name kept; false
  *                                        when there is no such folder or the name is a folder, with
  *                                        `why` saying so and where it looked
+ *   data_dir_open_input(path, &why)      a file found above, opened to read ("rb") only when it is a
+ *                                        regular file: a named pipe or a device is refused without
+ *                                        waiting on it (opened non-blocking, then fstat'ed, so that no
+ *                                        file swapped in between is read). NULL with *why, a static
+ *                                        string ("not a regular file", strerror's), otherwise
  */
 #ifndef COMMON_DATA_DIR_H
 #define COMMON_DATA_DIR_H
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 
 void data_dir_set(const char *dir);
 const char *data_dir(void);
@@ -30,5 +36,6 @@ bool data_dir_path(const char *relative, char *out, size_t size);
 const char *data_dir_origin(void);
 bool data_dir_find(const char *given, const char *first, char *out, size_t size, char *tried, size_t tried_size);
 bool data_dir_find_output(const char *given, char *out, size_t size, char *why, size_t why_size);
+FILE *data_dir_open_input(const char *path, const char **why);
 
 #endif

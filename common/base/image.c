@@ -1,6 +1,7 @@
 /* image.c - see image.h. PNG coding is stb's; this file adds checked, atomic writes and the comparison. */
 #include "image.h"
 
+#include "data_dir.h"
 #include "log.h"
 
 #include <errno.h>
@@ -50,7 +51,14 @@ bool image_load_png(const char *path, image *img)
 {
     *img = (image){0};
     int w, h, channels;
-    unsigned char *data = stbi_load(path, &w, &h, &channels, 4);
+    const char *why;
+    FILE *f = data_dir_open_input(path, &why); /* a named pipe is refused, not waited on */
+    if (!f) {
+        log_error("cannot load %s: %s", path, why);
+        return false;
+    }
+    unsigned char *data = stbi_load_from_file(f, &w, &h, &channels, 4);
+    fclose(f);
     if (!data) {
         log_error("cannot load %s: %s", path, stbi_failure_reason());
         return false;

@@ -42,7 +42,17 @@ static void write_line(double now)
     state.last_line = now;
 }
 
-/* Wakes twice a second; writes a line when the current frame is slow and none was written lately. */
+/* Worth a line: the current frame is slow, or a run of known length has gone on for as long (quick
+ * frames, many of them: every frame starts the frame clock again, so they alone never looked slow). */
+static bool overdue(double now)
+{
+    bool slow_frame = now - state.frame_start >= PROGRESS_AFTER_S;
+    bool long_run = state.total > 0 && now - state.run_start >= PROGRESS_AFTER_S;
+    return state.active && !state.quiet && (slow_frame || long_run) &&
+           now - state.last_line >= PROGRESS_EVERY_S;
+}
+
+/* Wakes twice a second; writes a line when the run is overdue and none was written lately. */
 static void *watch(void *unused)
 {
     (void)unused;
@@ -55,8 +65,7 @@ static void *watch(void *unused)
             until.tv_sec++, until.tv_nsec -= 1000000000L;
         pthread_cond_timedwait(&state.wake, &state.lock, &until);
         double now = now_s();
-        if (state.active && !state.quiet && now - state.frame_start >= PROGRESS_AFTER_S &&
-            now - state.last_line >= PROGRESS_EVERY_S)
+        if (overdue(now))
             write_line(now);
     }
     pthread_mutex_unlock(&state.lock);

@@ -1,5 +1,5 @@
-/* progress.h - a line on stderr while slow frames run: which frame, how long so far, about how long
- * is left. Runs whose frames are quick print nothing.
+/* progress.h - a line on stderr while slow frames, or a long run of quick ones, run: which frame, how
+ * long so far, about how long is left. Short runs of quick frames print nothing.
  *
  *   progress_set_quiet(quiet)             --quiet: no line at all
  *   progress_frame(what, index, total)    frame `index` (from 0) of `total` (0: no end known, a
@@ -7,8 +7,9 @@
  *                                         names the run ("07_face_culling", "bench case 3/40")
  *   progress_end()                        the frames are over: no line after this
  *
- * Once a frame has run for PROGRESS_AFTER_S seconds a watcher thread writes a line, so that a
- * single frame of minutes is reported while it runs, and again every PROGRESS_EVERY_S seconds:
+ * Once a frame, or a run with a known total, has run for PROGRESS_AFTER_S seconds a watcher thread
+ * writes a line, so that a single frame of minutes is reported while it runs, and so are minutes of
+ * quick frames (a --script of 100,000), and again every PROGRESS_EVERY_S seconds:
  *
  *   07_face_culling: frame 2 of 10 running for 4.1 s; 16.3 s elapsed, about 45 s left
  *

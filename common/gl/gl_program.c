@@ -63,7 +63,8 @@ static bool text_printf(source_text *s, const char *fmt, int a, int b)
 
 static char *read_file(const char *path)
 {
-    FILE *f = fopen(path, "rb");
+    const char *why; /* the caller says "cannot read shader"; a named pipe is refused, not waited on */
+    FILE *f = data_dir_open_input(path, &why);
     if (!f)
         return NULL;
     fseek(f, 0, SEEK_END);

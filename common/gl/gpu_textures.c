@@ -43,7 +43,7 @@ static bool make_array(const scene *s, bool srgb, int side, int layers, const in
     for (int i = 0; ok && i < s->texture_count; i++) {
         if (s->textures[i].srgb != srgb)
             continue;
-        ok = texture_data_load(&s->textures[i], side, rgba);
+        ok = texture_data_load(s, i, side, rgba);
         if (ok)
             glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, layer[i], side, side, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     }

@@ -16,7 +16,6 @@
 #include <sys/stat.h>
 
 #define SCRIPT_LINE_MAX 1024
-#define SCRIPT_FRAME_MAX 10000000L
 #define SCRIPT_BYTES_MAX (64L << 20) /* a file larger than this is no hand-written script */
 
 static const char *const kind_names[] = {
@@ -233,22 +232,17 @@ bool input_script_load(const char *path, input_script *s)
 {
     memset(s, 0, sizeof *s);
     struct stat st;
-    if (stat(path, &st) != 0) {
-        log_error("%s: cannot open script: %s", path, strerror(errno));
+    const char *why;
+    FILE *f = data_dir_open_input(path, &why); /* checked on the open file: a pipe is never waited on */
+    if (!f) {
+        bool folder = stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+        log_error("%s: cannot open script: %s%s", path, why, folder ? " (a folder)" : "");
         return false;
     }
-    if (!S_ISREG(st.st_mode)) {
-        log_error("%s: cannot open script: not a regular file%s", path, S_ISDIR(st.st_mode) ? " (a folder)" : "");
-        return false;
-    }
-    if (st.st_size > SCRIPT_BYTES_MAX) {
+    if (fstat(fileno(f), &st) == 0 && st.st_size > SCRIPT_BYTES_MAX) {
         log_error("%s: script of %lld bytes: more than the %ld a script may hold", path, (long long)st.st_size,
                   SCRIPT_BYTES_MAX);
-        return false;
-    }
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        log_error("%s: cannot open script: %s", path, strerror(errno));
+        fclose(f);
         return false;
     }
     size_t cap = 1 << 16, len = 0;

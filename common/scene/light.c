@@ -216,5 +216,6 @@ bool light_generate(scene *s, int count, uint32_t seed)
     free(s->lights);
     s->lights = lights;
     s->light_count = count;
+    s->light_capacity = count;
     return true;
 }

@@ -9,6 +9,7 @@
  */
 #include "scene.h"
 
+#include "data_dir.h"
 #include "log.h"
 #include "scene_internal.h"
 
@@ -182,9 +183,10 @@ bool scene_load(const char *path, scene *out)
         log_error("%s: scene path is longer than %d characters", path, SCENE_PATH_MAX - 1);
         return false;
     }
-    FILE *f = fopen(path, "rb");
+    const char *why;
+    FILE *f = data_dir_open_input(path, &why); /* a named pipe is refused, not waited on */
     if (!f) {
-        log_error("%s: cannot open scene: %s", path, strerror(errno));
+        log_error("%s: cannot open scene: %s", path, why);
         return false;
     }
     /* Read the whole file; its size is not trusted (pipes, files that change). */
@@ -315,13 +317,18 @@ bool scene_add_light(scene *s, const scene_light *light)
         memcpy(keys, light->keys, (size_t)light->key_count * sizeof *keys);
     }
     const scene_light copy = *light; /* `light` may point into s->lights, which realloc may move */
-    scene_light *grown = realloc(s->lights, ((size_t)s->light_count + 1) * sizeof *grown);
-    if (!grown) {
-        free(keys);
-        log_error("scene_add_light: out of memory");
-        return false;
+    if (!s->lights || s->light_count >= s->light_capacity) {
+        /* doubling: one light at a time made --lights 65536 copy the array 65,536 times */
+        int cap = s->light_count < 8 ? 8 : s->light_count <= INT_MAX / 2 ? 2 * s->light_count : INT_MAX;
+        scene_light *grown = realloc(s->lights, (size_t)cap * sizeof *grown);
+        if (!grown) {
+            free(keys);
+            log_error("scene_add_light: out of memory for %d lights", cap);
+            return false;
+        }
+        s->lights = grown;
+        s->light_capacity = cap;
     }
-    s->lights = grown;
     s->lights[s->light_count] = copy;
     s->lights[s->light_count].keys = keys;
     s->lights[s->light_count].key_count = keys ? copy.key_count : 0;

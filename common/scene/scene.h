@@ -6,7 +6,9 @@
  *   scene_destroy(scene)               free what a successful parse allocated
  *   scene_object_world_at(scene, i, t, out)   world matrix T*Ry*S (*base) of object i at time t
  *   scene_light_position_at(scene, i, t, out) position of light i at time t (a spot's too)
- *   scene_add_light(scene, light)      append a light (used by the --lights generator)
+ *   scene_add_light(scene, light)      append a light (used by the --lights generator); the array
+ *                                      grows by doubling, so n lights cost O(n), not O(n^2)
+ *   scene_map_attribute(map)           the material attribute that names a map ("base_map", ...)
  *
  * Everything is linear RGB, right-handed, +Y up; angles in the file are
  * degrees, stored here as given (degrees).
@@ -70,10 +72,16 @@ typedef enum scene_map {
 
 /* An image a material samples: a file, or an image embedded in a model file (.glb, data URI). */
 typedef struct scene_texture {
-    char path[SCENE_PATH_MAX]; /* a file: resolved like a mesh file; embedded: "MODEL#N", for messages */
+    char path[SCENE_PATH_MAX]; /* a file: its real path (realpath: one texture per file, however it is
+                                  spelt); embedded: "MODEL#N", for messages */
     unsigned char *data;       /* embedded: the encoded bytes (PNG, JPEG), owned by the scene; else NULL */
     size_t size;               /* embedded: bytes in data */
     bool srgb;                 /* colour data (base colour, emissive), decoded from sRGB */
+    /* Where the scene first names it, for the messages of a later decode: "SCENE:LINE: material
+     * 'NAME' base_map 'PATH': ..." (line 0: not from a scene file) */
+    int line;
+    char material[SCENE_NAME_MAX];
+    scene_map map;
 } scene_texture;
 
 typedef struct scene_material {
@@ -142,6 +150,7 @@ typedef struct scene {
     int object_count;
     scene_light *lights;
     int light_count;
+    int light_capacity; /* lights allocated (scene_add_light doubles it); 0: as many as light_count */
     scene_texture *textures; /* the images materials sample (scene_material.maps) */
     int texture_count;
     scene_probe *probes; /* directive `probe`, at most SCENE_PROBE_MAX */
@@ -155,5 +164,6 @@ void scene_destroy(scene *s);
 void scene_object_world_at(const scene *s, int index, float time, mat4 out);
 void scene_light_position_at(const scene *s, int index, float time, vec3 out);
 bool scene_add_light(scene *s, const scene_light *light);
+const char *scene_map_attribute(scene_map map);
 
 #endif

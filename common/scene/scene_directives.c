@@ -8,11 +8,9 @@
 
 #include "data_dir.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #define SCENE_SPHERE_MAX 4096
 
@@ -195,27 +193,37 @@ static bool parse_material(parser *p)
     return scene_parser_add_name(p, &p->material_names, m.name, p->s.material_count - 1);
 }
 
+/* "cannot open model 'PATH': why", or, for a file a material names (owner "material 'm' base_map"),
+ * "material 'm' base_map 'PATH': cannot open image: why". */
+static bool fail_open(parser *p, const char *owner, const char *what, const char *path, const char *why)
+{
+    if (owner)
+        return scene_parser_fail(p, "%s '%s': cannot open %s: %s", owner, path, what, why);
+    return scene_parser_fail(p, "cannot open %s '%s': %s", what, path, why);
+}
+
 /* Model and image paths are relative to the scene file's folder, then to the data folder; absolute
- * paths are kept. `what` names the file in messages ("model", "image"). */
-bool scene_parser_resolve_file(parser *p, const char *what, const char *given, char out[SCENE_PATH_MAX])
+ * paths are kept. `what` names the file in messages ("model", "image"), after `owner` if not NULL. */
+bool scene_parser_resolve_file(parser *p, const char *owner, const char *what, const char *given,
+                               char out[SCENE_PATH_MAX])
 {
     size_t base = given[0] == '/' ? 0 : strlen(p->base_dir);
     if (base + 1 + strlen(given) >= SCENE_PATH_MAX)
-        return scene_parser_fail(p, "%s path '%s' is longer than %d characters", what,
-                                 scene_parser_show_token(given).text, SCENE_PATH_MAX - 1);
-    char tried[2 * SCENE_PATH_MAX + 4400];
-    if (!data_dir_find(given, p->base_dir, out, SCENE_PATH_MAX, tried, sizeof tried))
-        return scene_parser_fail(p, "cannot open %s '%s': No such file or directory (looked for %s)", what, out,
-                                 tried);
-    /* Only check that the file is there and readable: its loader reads it later. */
-    FILE *f = fopen(out, "rb");
+        return scene_parser_fail(p, "%s%s%s path '%s' is longer than %d characters", owner ? owner : "",
+                                 owner ? ": " : "", what, scene_parser_show_token(given).text,
+                                 SCENE_PATH_MAX - 1);
+    char tried[2 * SCENE_PATH_MAX + 4400], why[sizeof tried + 64];
+    if (!data_dir_find(given, p->base_dir, out, SCENE_PATH_MAX, tried, sizeof tried)) {
+        snprintf(why, sizeof why, "No such file or directory (looked for %s)", tried);
+        return fail_open(p, owner, what, out, why);
+    }
+    /* Only check that the file is there, regular and readable: its loader reads it later. A named
+     * pipe is refused here without waiting for a writer. */
+    const char *reason;
+    FILE *f = data_dir_open_input(out, &reason);
     if (!f)
-        return scene_parser_fail(p, "cannot open %s '%s': %s", what, out, strerror(errno));
-    struct stat st;
-    bool regular = fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode);
+        return fail_open(p, owner, what, out, reason);
     fclose(f);
-    if (!regular)
-        return scene_parser_fail(p, "cannot open %s '%s': not a regular file", what, out);
     return true;
 }
 
@@ -241,7 +249,7 @@ static bool take_mesh_kind(parser *p, scene_mesh *m)
         m->kind = SCENE_MESH_FILE;
         if (scene_parser_at_end(p))
             return scene_parser_fail(p, "mesh '%s': missing model path after 'file'", m->name);
-        if (!scene_parser_resolve_file(p, "model", p->tok[p->pos++], m->path))
+        if (!scene_parser_resolve_file(p, NULL, "model", p->tok[p->pos++], m->path))
             return false;
     } else {
         return scene_parser_fail(p, "mesh '%s': unknown kind '%s' (expected cube, plane, sphere or file)",

@@ -20,7 +20,8 @@
  *   scene_parser_take_switch(p, what, &off)              read `on` or `off` (off sets *off)
  * scene_directives.c:
  *   scene_parser_run_directive(p)                        parse a tokenized line by its directive
- *   scene_parser_resolve_file(p, what, given, out)       a model or image path, found and readable
+ *   scene_parser_resolve_file(p, owner, what, given, out) a model or image path, found, a regular
+ *                                                        file and readable
  *   scene_parser_take_placement(p, what, o, &seen)       an object's position, rotate_y, scale or cast
  *   scene_parser_take_opacity(p, &opacity)               a material's opacity, 0 < A <= 1
  * scene_materials.c:
@@ -85,9 +86,10 @@ typedef struct parser {
     int count; /* tokens on this line */
     int pos;   /* next token to read */
     scene s;
-    int mesh_cap, material_cap, object_cap, light_cap, texture_cap, probe_cap;
+    int mesh_cap, material_cap, object_cap, texture_cap, probe_cap; /* the lights': s.light_capacity */
     name_table mesh_names, material_names;
     int camera_line, ambient_line, falloff_line; /* 0 until given */
+    long long texels;              /* of the maps' images so far, each texture once (MODEL_TEXELS_MAX) */
     last_kind last;                /* what a "key" line attaches to */
     int last_key_cap;              /* capacity of that object's or light's key array */
 } parser;
@@ -117,7 +119,8 @@ int scene_parser_take_attribute(parser *p, const char *what, const char *const n
 bool scene_parser_take_switch(parser *p, const char *what, bool *off);
 
 bool scene_parser_run_directive(parser *p);
-bool scene_parser_resolve_file(parser *p, const char *what, const char *given, char out[SCENE_PATH_MAX]);
+bool scene_parser_resolve_file(parser *p, const char *owner, const char *what, const char *given,
+                               char out[SCENE_PATH_MAX]);
 bool scene_parser_take_pbr(parser *p, scene_material *m);
 bool scene_parser_take_opacity(parser *p, float *opacity);
 bool scene_parser_take_placement(parser *p, const char *what, scene_object *o, unsigned *seen);

@@ -17,7 +17,7 @@ void scene_parser_start_keys(parser *p, last_kind last)
 /* The light read, appended; the key lines that follow animate it. */
 static bool add_light(parser *p, const scene_light *l)
 {
-    scene_light *grown = scene_parser_append(p, p->s.lights, &p->s.light_count, &p->light_cap, l, sizeof *l);
+    scene_light *grown = scene_parser_append(p, p->s.lights, &p->s.light_count, &p->s.light_capacity, l, sizeof *l);
     if (!grown)
         return false;
     p->s.lights = grown;

@@ -3,20 +3,31 @@
  * lights (model_import.c reads them) appended to the scene, the whole model placed as one object
  * would be. The course's own lines can add lights and a camera around it.
  */
+#define _XOPEN_SOURCE 700 /* realpath */
+
 #include "scene_internal.h"
 
 #include "model_import.h"
 
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* The scene's texture equal to t (same image, same colour space), appended when there is none. */
-static int merge_texture(parser *p, scene_texture *t)
+/* The scene's texture equal to t (same image, same colour space), appended when there is none; a
+ * file is known by its real path, as a material's map is (scene_materials.c), so a model's image and
+ * a map naming the same file share one texture. The first material to use it names it in messages. */
+static int merge_texture(parser *p, scene_texture *t, const scene_material *m, int map)
 {
+    char real[PATH_MAX];
+    if (!t->data && realpath(t->path, real) && strlen(real) < sizeof t->path)
+        memcpy(t->path, real, strlen(real) + 1);
     for (int i = 0; i < p->s.texture_count; i++)
         if (p->s.textures[i].srgb == t->srgb && strcmp(p->s.textures[i].path, t->path) == 0)
             return i;
+    t->line = p->line;
+    t->map = (scene_map)map;
+    memcpy(t->material, m->name, sizeof t->material);
     scene_texture *grown =
         scene_parser_append(p, p->s.textures, &p->s.texture_count, &p->texture_cap, t, sizeof *t);
     if (!grown)
@@ -55,7 +66,7 @@ static bool merge(parser *p, scene *part, const scene_object *place, int *mesh_a
     for (int i = 0; i < part->material_count; i++) {
         scene_material m = part->materials[i];
         for (int k = 0; k < SCENE_MAP_COUNT; k++)
-            if (m.maps[k] >= 0 && (textures[k] = merge_texture(p, &part->textures[m.maps[k]])) < 0)
+            if (m.maps[k] >= 0 && (textures[k] = merge_texture(p, &part->textures[m.maps[k]], &m, k)) < 0)
                 return false;
         for (int k = 0; k < SCENE_MAP_COUNT; k++)
             m.maps[k] = m.maps[k] >= 0 ? textures[k] : -1;
@@ -92,7 +103,7 @@ static bool merge(parser *p, scene *part, const scene_object *place, int *mesh_a
         glm_mat4_pick3(world, turn);
         glm_mat3_mulv(turn, part->lights[i].direction, l.direction);
         scene_light *grown =
-            scene_parser_append(p, p->s.lights, &p->s.light_count, &p->light_cap, &l, sizeof l);
+            scene_parser_append(p, p->s.lights, &p->s.light_count, &p->s.light_capacity, &l, sizeof l);
         if (!grown)
             return false;
         p->s.lights = grown;
@@ -106,7 +117,7 @@ bool scene_parser_parse_model(parser *p)
         return scene_parser_fail(p,
                                  "model: missing path (model PATH [position X Y Z] [rotate_y D] [scale S])");
     char path[SCENE_PATH_MAX];
-    if (!scene_parser_resolve_file(p, "model", p->tok[p->pos++], path))
+    if (!scene_parser_resolve_file(p, NULL, "model", p->tok[p->pos++], path))
         return false;
     scene_object place = {.scale = {1.0f, 1.0f, 1.0f}};
     unsigned seen = 0;

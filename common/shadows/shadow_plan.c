@@ -227,7 +227,8 @@ static void choose(shadow_plan *p, const vec3 eye, const shadow_light *lights, i
         p->first_tile[i] = -1;
     }
     sort_plan = p;
-    qsort(p->order, (size_t)n, sizeof *p->order, by_importance);
+    if (n > 1) /* with no light the array is NULL, which qsort may not be given even for 0 elements */
+        qsort(p->order, (size_t)n, sizeof *p->order, by_importance);
     for (int r = 0; r < n; r++) {
         int i = p->order[r];
         int *previous = &p->previous_tier[lights[i].source];
@@ -272,7 +273,8 @@ static bool pack(shadow_plan *p, const shadow_light *lights, int n)
         for (int f = 0; f < p->faces[i]; f++)
             p->tiles[p->tile_count++] = (shadow_tile){.light = i, .face = f, .size = tier_size(p, p->tier[i])};
     }
-    qsort(p->tiles, (size_t)p->tile_count, sizeof *p->tiles, by_size);
+    if (p->tile_count > 1) /* no light shadowed: no tile array at all */
+        qsort(p->tiles, (size_t)p->tile_count, sizeof *p->tiles, by_size);
     long cursor = 0;
     const int unit = unit_size(p);
     for (int t = 0; t < p->tile_count; t++) {

@@ -12,6 +12,8 @@
 #include "keys.h"
 #include "test_util.h"
 
+#include <string.h>
+
 static void test_parses_and_orders(void **state)
 {
     (void)state;
@@ -102,17 +104,44 @@ static void test_feed_reaches_input(void **state)
     input_script_destroy(&s);
 }
 
-/* The limit is what the message says: 1,000,000 events load, one more does not. */
+/* The limits are what input_script.h says: frames 0..99,999, and 1,000,000 events load, one more
+ * does not. */
 static void test_event_limit_as_stated(void **state)
 {
     (void)state;
     input_script s;
-    assert_true(input_script_parse("0-999999 key W\n", "limit", &s));
-    assert_int_equal(s.count, SCRIPT_EVENTS_MAX);
-    assert_int_equal(input_script_last_frame(&s), 999999);
+    char text[200];
+    text[0] = '\0';
+    for (int i = 0; i < 10; i++) /* ten ranges over every frame a script may name */
+        strcat(text, "0-99999 key W\n");
+    assert_true(input_script_parse(text, "limit", &s));
+    assert_int_equal(s.count, 1000000);
+    assert_int_equal(SCRIPT_EVENTS_MAX, 1000000);
+    assert_int_equal(input_script_last_frame(&s), 99999);
     input_script_destroy(&s);
-    assert_false(input_script_parse("0-999999 key W\n1000000 quit\n", "limit", &s));
+    strcat(text, "0 quit\n");
+    assert_false(input_script_parse(text, "limit", &s));
     assert_null(s.events);
+}
+
+/* A 14-byte line asked for a million frames (47 minutes of a headless run, no output): the last
+ * frame a script may name is 99,999, so a script runs at most 100,000 frames. */
+static void test_frame_limit_as_stated(void **state)
+{
+    (void)state;
+    input_script s;
+    assert_true(input_script_parse("99999 quit\n", "frames", &s));
+    assert_int_equal(input_script_last_frame(&s), 99999);
+    input_script_destroy(&s);
+    assert_true(input_script_parse("0-99999 down W\n", "frames", &s));
+    assert_int_equal(s.count, 100000);
+    input_script_destroy(&s);
+    static const char *const refused[] = {"100000 quit\n", "0-100000 key W\n", "0-999999 key W\n",
+                                          "99999-100000 up W\n"};
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        assert_false(input_script_parse(refused[i], "frames", &s));
+        assert_null(s.events);
+    }
 }
 
 /* A check compares with a mark made before it: an earlier frame, or an earlier line of its frame. */
@@ -143,6 +172,7 @@ static void test_paths_and_files(void **state)
     assert_null(s.events);
 }
 
-UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_event_limit_as_stated), cmocka_unit_test(test_check_needs_a_mark),
+UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_event_limit_as_stated), cmocka_unit_test(test_frame_limit_as_stated),
+               cmocka_unit_test(test_check_needs_a_mark),
                cmocka_unit_test(test_paths_and_files), cmocka_unit_test(test_parses_and_orders), cmocka_unit_test(test_keys_by_label),
                cmocka_unit_test(test_rejects_bad_lines), cmocka_unit_test(test_feed_reaches_input))

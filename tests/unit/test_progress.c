@@ -1,6 +1,7 @@
-/* test_progress.c - the progress line (common/base/progress.c): nothing while frames are quick, a
- * line with the frame, the time so far and an estimate once one runs past PROGRESS_AFTER_S, and
- * nothing at all with --quiet. stderr goes to a file so that the lines can be read back. */
+/* test_progress.c - the progress line (common/base/progress.c): nothing while a few frames are quick,
+ * a line with the frame, the time so far and an estimate once one runs past PROGRESS_AFTER_S, or a
+ * long run of quick ones does, and nothing at all with --quiet. stderr goes to a file so that the
+ * lines can be read back. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -73,5 +74,51 @@ static void test_slow_frame_reported_while_it_runs(void **state)
     progress_set_quiet(false);
 }
 
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* Quick frames, many of them: each one restarted the frame clock, so a run of a million 3 ms frames
+ * (a --script) went on for most of an hour without a line. Once the run has gone on for
+ * PROGRESS_AFTER_S it is reported as a slow frame is. Frames are run until a line shows: the 60 s
+ * only stop a run that never prints one. */
+static void test_long_run_of_quick_frames_reported(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/test_progress_XXXXXX", text[1024];
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    fflush(stderr);
+    int saved = dup(2);
+    dup2(fd, 2);
+    const double start = now_s();
+    const long total = 1000000;
+    long frames = 0;
+    for (off_t written = 0; written == 0 && frames < total && now_s() - start < 60.0; frames++) {
+        progress_frame("quick", frames, total);
+        sleep_s(0.002);
+        written = lseek(fd, 0, SEEK_END);
+    }
+    progress_end();
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    lseek(fd, 0, SEEK_SET);
+    ssize_t got = read(fd, text, sizeof text - 1);
+    text[got > 0 ? got : 0] = '\0';
+    close(fd);
+    unlink(path);
+    if (!strstr(text, " of 1000000 running for "))
+        print_error("after %ld quick frames, stderr held '%s'\n", frames, text);
+    assert_non_null(strstr(text, "quick: frame "));
+    assert_non_null(strstr(text, " of 1000000 running for "));
+    assert_non_null(strstr(text, "s elapsed, about "));
+    assert_true(frames > 1);
+}
+
 UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_quick_frames_are_silent),
-               cmocka_unit_test(test_slow_frame_reported_while_it_runs))
+               cmocka_unit_test(test_slow_frame_reported_while_it_runs),
+               cmocka_unit_test(test_long_run_of_quick_frames_reported))

@@ -20,6 +20,17 @@
 /* Parsed floats are the nearest float to the decimal text; interpolation adds a few ulps. */
 #define EPS 1e-5f
 
+/* Every realloc of this program, the scene module's included, passes here: tests/CMakeLists.txt links
+ * it with -Wl,--wrap=realloc, so that a test can count how often an array was grown. */
+void *__real_realloc(void *p, size_t n);
+void *__wrap_realloc(void *p, size_t n);
+static long realloc_calls;
+void *__wrap_realloc(void *p, size_t n)
+{
+    realloc_calls++;
+    return __real_realloc(p, n);
+}
+
 static int setup_dir(void **state)
 {
     (void)state;
@@ -405,6 +416,25 @@ static void test_add_light(void **state)
     assert_int_equal(empty.light_count, 1);
     assert_null(empty.lights[0].keys);
     scene_destroy(&empty);
+}
+
+/* The --lights generator's 65,536 lights through scene_add_light: the array doubles (8, 16, ...,
+ * 65,536: 14 reallocations), where growing it one light at a time made 65,536 (seconds under ASan). */
+static void test_add_light_grows_by_doubling(void **state)
+{
+    (void)state;
+    scene s = {0};
+    const scene_light l = {.color = {1, 1, 1}, .intensity = 1, .kc = 1};
+    long before = realloc_calls;
+    for (int i = 0; i < 65536; i++)
+        assert_true(scene_add_light(&s, &l));
+    long grown = realloc_calls - before;
+    if (grown > 14)
+        print_error("65536 lights took %ld reallocations\n", grown);
+    assert_int_equal(s.light_count, 65536);
+    assert_true(grown <= 14);
+    assert_float_equal(s.lights[65535].kc, 1.0f, EPS);
+    scene_destroy(&s);
 }
 
 /* ---- errors ------------------------------------------------------------------------------------- */
@@ -812,7 +842,8 @@ static void test_large_scene(void **state)
 UNIT_TEST_MAIN(setup_dir, tmp_dir_remove, cmocka_unit_test(test_defaults),
                cmocka_unit_test(test_every_attribute), cmocka_unit_test(test_comments_and_layout),
                cmocka_unit_test(test_keys), cmocka_unit_test(test_world_matrix),
-               cmocka_unit_test(test_add_light), cmocka_unit_test(test_errors),
+               cmocka_unit_test(test_add_light), cmocka_unit_test(test_add_light_grows_by_doubling),
+               cmocka_unit_test(test_errors),
                cmocka_unit_test(test_spot), cmocka_unit_test(test_spot_errors),
                cmocka_unit_test(test_opacity), cmocka_unit_test(test_opacity_errors),
                cmocka_unit_test(test_shadow_switches),

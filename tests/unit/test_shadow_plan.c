@@ -2,7 +2,8 @@
  * importance and tiers with hysteresis, tiles that never overlap and stay inside the atlas, the least
  * important lights shrunk then dropped when the atlas is full, --shadows N, per-tile caster culling
  * (never losing a caster that can reach the tile), and the cache (a still frame draws nothing; a
- * moved light or caster redraws exactly the lights it can touch).
+ * moved light or caster redraws exactly the lights it can touch), and an empty plan (no light, every
+ * light `shadow off`, --shadows 0).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -119,6 +120,39 @@ static void test_overflow(void **state)
     shadow_plan_destroy(&p);
 }
 
+/* Nothing to shadow: no light at all, every light `shadow off`, or --shadows 0. The plan is empty,
+ * and getting there sorts no array (qsort(NULL, 0, ...) once stopped every chapter under UBSan). */
+static void test_nothing_shadowed(void **state)
+{
+    (void)state;
+    shadow_light lights[3] = {point(0, 0, -2, 3, 0), point(1, 0, -2, 3, 1), point(2, 0, -2, 3, 2)};
+    shadow_caster caster = box(0, 0, -1, 0.5f);
+    shadow_plan p;
+    shadow_plan_create(&p, &DESC);
+    assert_true(shadow_plan_frame(&p, (vec3){0, 0, 0}, NULL, 0, &caster, 1));
+    assert_int_equal(p.tile_count, 0);
+    assert_int_equal(p.stats.shadowed, 0);
+    shadow_plan_destroy(&p);
+
+    for (int i = 0; i < 3; i++)
+        lights[i].shadow_off = true;
+    shadow_plan_create(&p, &DESC);
+    assert_true(shadow_plan_frame(&p, (vec3){0, 0, 0}, lights, 3, &caster, 1));
+    assert_int_equal(p.tile_count, 0);
+    assert_int_equal(p.stats.off, 3);
+    shadow_plan_destroy(&p);
+
+    shadow_plan_desc none = DESC;
+    none.max_shadowed = 0;
+    for (int i = 0; i < 3; i++)
+        lights[i].shadow_off = false;
+    shadow_plan_create(&p, &none);
+    assert_true(shadow_plan_frame(&p, (vec3){0, 0, 0}, lights, 3, &caster, 1));
+    assert_int_equal(p.tile_count, 0);
+    assert_int_equal(p.stats.not_chosen, 3);
+    shadow_plan_destroy(&p);
+}
+
 /* Culling: a caster outside the sphere is drawn nowhere; one inside, only in the faces that see it. */
 static void test_culling(void **state)
 {
@@ -172,5 +206,6 @@ static void test_cache(void **state)
 }
 
 UNIT_TEST_MAIN(NULL, NULL, cmocka_unit_test(test_importance), cmocka_unit_test(test_cube_face),
+               cmocka_unit_test(test_nothing_shadowed),
                cmocka_unit_test(test_packing), cmocka_unit_test(test_overflow), cmocka_unit_test(test_culling),
                cmocka_unit_test(test_cache))
