@@ -2,6 +2,8 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "model_file.h"
 
+#include "data_dir.h"
+
 #include <assimp/cfileio.h>
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
@@ -107,10 +109,12 @@ bool model_path_inside(const char *model, const char *path, long long *size, cha
 char *model_read_file(const char *path, const model_limits *lim, size_t *size, char *why, size_t n)
 {
     struct stat st;
-    FILE *f = NULL;
-    errno = 0;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || !(f = fopen(path, "rb"))) {
-        model_fail(why, n, "%s", errno && !f ? strerror(errno) : "not a regular file");
+    const char *reason = NULL;
+    FILE *f = data_dir_open_input(path, &reason); /* a regular file, or refused without waiting on it */
+    if (!f || fstat(fileno(f), &st) != 0) {
+        model_fail(why, n, "%s", f ? strerror(errno) : reason);
+        if (f)
+            fclose(f);
         return NULL;
     }
     if (st.st_size > lim->bytes) {
@@ -223,8 +227,12 @@ static struct aiFile *io_open(struct aiFileIO *fio, const char *name, const char
             io->outside |= strstr(reason, "outside") != NULL;
             return NULL;
         }
-        if (stat(name, &st) != 0 || !S_ISREG(st.st_mode) || !(disk = fopen(name, "rb")))
+        const char *refused;
+        if (!(disk = data_dir_open_input(name, &refused)) || fstat(fileno(disk), &st) != 0) {
+            if (disk)
+                fclose(disk);
             return NULL;
+        }
         if (st.st_size > io->budget) { /* never one Assimp could read */
             io->over = true;
             fclose(disk);

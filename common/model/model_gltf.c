@@ -7,6 +7,8 @@
  * disagree on what the file says. */
 #include "model_file.h"
 
+#include "data_dir.h"
+
 #include <cjson/cJSON.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -394,7 +396,8 @@ static const unsigned char *buffer_data(gltf *g, long long i)
     char path[MODEL_PATH_MAX];
     long long size;
     FILE *f = NULL;
-    if (!uri_file(g, s, "buffer", i, path, sizeof path, &size) || !(f = fopen(path, "rb")) ||
+    const char *refused;
+    if (!uri_file(g, s, "buffer", i, path, sizeof path, &size) || !(f = data_dir_open_input(path, &refused)) ||
         fread(out, 1, (size_t)length, f) != (size_t)length) {
         if (f)
             fclose(f), model_fail(g->why, g->n, "buffer %lld: its file cannot be read", i);

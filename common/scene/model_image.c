@@ -2,6 +2,7 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "model_image.h"
 
+#include "data_dir.h"
 #include "model_file.h"
 
 #include <assimp/scene.h>
@@ -87,8 +88,9 @@ bool model_image_check(const struct aiScene *sc, const char *model, const char *
         if (!realpath(out->path, resolved) || strlen(resolved) >= sizeof out->path)
             return model_fail(why, n, "%s: its path is too long", shown);
         memcpy(out->path, resolved, strlen(resolved) + 1);
-        if (!(f = fopen(out->path, "rb")))
-            return model_fail(why, n, "%s: no such file", shown);
+        const char *refused;
+        if (!(f = data_dir_open_input(out->path, &refused)))
+            return model_fail(why, n, "%s: %s", shown, refused);
         size_t got = fread(head, 1, sizeof head, f);
         fclose(f);
         if (bytes > max_bytes)
