@@ -22,6 +22,15 @@ function(chapter_19_tests)
   endforeach()
   course_golden_test(19_image_based_light_teapots_probe ${C} 1 0.0001 --view probe --scene ${A}/teapots_probes.scene)
   course_golden_test(19_image_based_light_size32 ${C} 1 0.0001 --view specular --probe-size 32)
+  # Exercise 2's pictures: the middle probe raised (tests/chapters/probe_exercise.py checks the scene
+  # copy and the count the page gives).
+  course_golden_test(19_image_based_light_probe_raised ${C} 1 0.0001 --view probe
+    --scene ${S}/default_probe_raised.scene)
+  course_golden_test(19_image_based_light_probe_raised_lit ${C} 1 0.0001 --scene ${S}/default_probe_raised.scene)
+  find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
+  add_test(NAME pages.19_exercise_2
+    COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/chapters/probe_exercise.py ${CMAKE_SOURCE_DIR})
+  set_tests_properties(pages.19_exercise_2 PROPERTIES LABELS unit)
   # With chapter 17's occlusion under the probes' light, on the PBR scene (docs/19's picture).
   course_golden_test(19_image_based_light_pbr_ssao ${C} 1 0.0001 --ssao on --scene ${S}/ibl_pbr.scene)
 
