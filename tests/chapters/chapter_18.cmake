@@ -149,3 +149,9 @@ add_test(NAME pages.18_exercise_4
           $<TARGET_FILE:test_brdf_furnace_exercise4>
           "most returned: 1.8401 (roughness 0, metallic 0, view 88 deg); 101 of 189 cases over 1 + 0.001")
 set_tests_properties(pages.18_exercise_4 PROPERTIES LABELS unit)
+
+# The page's exercise 2, performed: the copy without normal maps, made by the page's own sed line.
+add_test(NAME pages.18_exercise_2
+  COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/chapters/run_pbr_exercise.sh $<TARGET_FILE:18_pbr_materials>
+          $<TARGET_FILE:imgdiff> ${CMAKE_SOURCE_DIR} ${COURSE_TEST_OUT}/18_exercise_2)
+set_tests_properties(pages.18_exercise_2 PROPERTIES LABELS golden SKIP_RETURN_CODE 77)

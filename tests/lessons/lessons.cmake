@@ -48,3 +48,7 @@ add_test(NAME pages.commands_refused
     grep -q 'which no line of the block starts with' <<<\"$out\""
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(pages.commands_refused PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+# Every picture a page's commands write in the course's folder is one git ignores.
+add_test(NAME lessons.screenshots_ignored
+  COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/lessons/screenshots_ignored.py ${CMAKE_SOURCE_DIR})
+set_tests_properties(lessons.screenshots_ignored PROPERTIES LABELS unit SKIP_RETURN_CODE 77)

@@ -1,0 +1,31 @@
+#!/usr/bin/env python3
+"""screenshots_ignored.py ROOT - every file a page tells the learner to write with --screenshot (or
+--heatmap) from the course's folder is one git leaves out (.gitignore), so following the pages never
+leaves untracked pictures in the learner's `git status`. Exit 0 when all are ignored, 1 naming the
+first that is not, 77 when ROOT is not a git checkout."""
+import pathlib
+import re
+import subprocess
+import sys
+
+WRITES = re.compile(r"--(?:screenshot|heatmap(?:-on-fail)?)[ =]([\w./-]+\.png)")
+
+
+def main(argv):
+    root = pathlib.Path(argv[1])
+    if subprocess.run(["git", "-C", str(root), "rev-parse"], capture_output=True).returncode != 0:
+        print("skip: not a git checkout")
+        return 77
+    pages = [root / "README.md"] + sorted((root / "docs").glob("*.md"))
+    written = sorted({(page.name, path) for page in pages for path in WRITES.findall(page.read_text())
+                      if not path.startswith(("/", "$"))})
+    bad = [(page, path) for page, path in written
+           if subprocess.run(["git", "-C", str(root), "check-ignore", "-q", "--no-index", path]).returncode != 0]
+    for page, path in bad:
+        print(f"FAIL {page}: writes '{path}', which git would list as untracked")
+    print(f"{len(written) - len(bad)} of {len(written)} pictures the pages write are ignored by git")
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
