@@ -111,6 +111,29 @@ static bool holds_nul(const char *p, size_t size)
     return false;
 }
 
+/* The byte where `p` stops being UTF-8 (glTF's JSON must be), or `size`: no overlong forms, no
+ * surrogates, nothing past U+10FFFF. Assimp 5.2 crashed on a mimeType holding a stray 0xd5. */
+static size_t utf8_end(const unsigned char *p, size_t size)
+{
+    for (size_t i = 0; i < size;) {
+        unsigned c = p[i];
+        size_t more = c < 0x80 ? 0 : (c & 0xe0) == 0xc0 ? 1 : (c & 0xf0) == 0xe0 ? 2 : (c & 0xf8) == 0xf0 ? 3 : 4;
+        if (more == 4 || i + more >= size) /* a byte no character starts with, or one cut short */
+            return i;
+        unsigned long code = more == 0 ? c : c & (0x3fu >> more);
+        for (size_t k = 1; k <= more; k++) {
+            if ((p[i + k] & 0xc0) != 0x80)
+                return i;
+            code = code << 6 | (p[i + k] & 0x3fu);
+        }
+        static const unsigned long least[4] = {0, 0x80, 0x800, 0x10000};
+        if (code < least[more] || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff))
+            return i;
+        i += more + 1;
+    }
+    return size;
+}
+
 static int compare_keys(const void *a, const void *b)
 {
     return strcmp((*(cJSON *const *)a)->string, (*(cJSON *const *)b)->string);
@@ -861,6 +884,11 @@ char *model_gltf_check(const char *name, const char *data, size_t size, bool sib
         return NULL;
     if (holds_nul(json, json_size)) {
         model_fail(why, n, "its JSON holds a NUL character");
+        return NULL;
+    }
+    size_t bad = utf8_end((const unsigned char *)json, json_size);
+    if (bad < json_size) {
+        model_fail(why, n, "its JSON is not UTF-8 (byte %zu of %zu)", bad, json_size);
         return NULL;
     }
     const char *end = NULL;

@@ -233,6 +233,8 @@ def cases(outside):
         ("many_lights", doc("a.gltf", lights("point", 50000)), "'lights' has more than 4096 entries"),
         ("duplicate_key", doc("a.gltf", json.dumps(triangle())[:-1] + ', "scene": 0}'), "the key 'scene' twice"),
         ("json_nul", doc("a.gltf", json.dumps(triangle("a\\u0000../x.bin")).replace("\\\\u", "\\u")), "NUL"),
+        ("json_not_utf8", raw("a.gltf", json.dumps(with_image("a.png")).replace('"a.png"', '"a.png", "mimeType": "image/png"')
+                                .encode().replace(b"image/png", b"image\xd5png")), "its JSON is not UTF-8"),
         ("json_broken", doc("a.gltf", json.dumps(triangle())[:-20]), "its JSON cannot be read"),
         ("gltf_1", doc("a.gltf", changed(triangle(), lambda g: g["asset"].update(version="1.0"))),
          "not a glTF 2.0 file"),
