@@ -21,7 +21,11 @@ function(chapter_18_tests)
   foreach(view albedo metallic roughness normal occlusion depth)
     course_golden_test(18_pbr_${view} ${C} 1 0.0001 ${PBR} --view ${view})
   endforeach()
-  course_golden_test(18_pbr_exposure4 ${C} 1 0.0001 ${PBR} --exposure 4)
+  # 2/255: llvmpipe compiles its shaders for the CPU it runs on, and the last bits of its arithmetic
+  # differ between CPUs; four times the exposure brings them to 2 levels. Measured against this golden
+  # (made on an AMD EPYC host) on an Intel Xeon host with AVX-512: 78 pixels of 76,800 at 2/255, none
+  # beyond (2026-12-07); every other golden of this chapter within 1/255 on both.
+  course_golden_test(18_pbr_exposure4 ${C} 2 0.0001 ${PBR} --exposure 4)
 
   # Every renderer shades them the same way: chapter 18's deferred frame, Forward+, and the deferred
   # chapters that draw opaque surfaces (03 full-screen, 06 summed volumes, 07 culled volumes, 10 tiles,

@@ -32,7 +32,11 @@ function(chapter_19_tests)
     COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/chapters/probe_exercise.py ${CMAKE_SOURCE_DIR})
   set_tests_properties(pages.19_exercise_2 PROPERTIES LABELS unit)
   # With chapter 17's occlusion under the probes' light, on the PBR scene (docs/19's picture).
-  course_golden_test(19_image_based_light_pbr_ssao ${C} 1 0.0001 --ssao on --scene ${S}/ibl_pbr.scene)
+  # 2/255: llvmpipe's arithmetic differs in the last bits between CPUs (it compiles its shaders for
+  # the one it runs on), and the occlusion times the probes' light carries them to 2 levels: against
+  # this golden (made on an AMD EPYC host), an Intel Xeon host with AVX-512 gave 45 pixels of 76,800
+  # at 2/255, none beyond (2026-12-07).
+  course_golden_test(19_image_based_light_pbr_ssao ${C} 2 0.0001 --ssao on --scene ${S}/ibl_pbr.scene)
 
   # Forward gets it too: deferred, forward and Forward+ agree on the lit picture.
   foreach(case "default|" "teapots_cutoff0|--scene@${A}/teapots_probes.scene@--cutoff@0" "800|--size@800x600"
