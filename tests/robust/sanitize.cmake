@@ -19,6 +19,18 @@ if(COURSE_SANITIZE)
     endforeach()
   endforeach()
 
+  # Every chapter with no light at all (lists, volumes, tiles and clusters of nothing).
+  foreach(chapter ${COURSE_CHAPTERS})
+    if(NOT chapter MATCHES "^1[4-9]_") # the shadowed ones get it below, with shadows asked for
+      add_test(NAME sanitize.${chapter}.no_light
+        COMMAND $<TARGET_FILE:${chapter}> --headless --size 160x120 --frames 1 --gl-debug --lights 0
+        WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+      set_tests_properties(sanitize.${chapter}.no_light PROPERTIES LABELS sanitize SKIP_RETURN_CODE 77
+        ENVIRONMENT "${COURSE_SANITIZE_ENV}" TIMEOUT 120
+        FAIL_REGULAR_EXPRESSION "ERROR: (Address|Leak)Sanitizer|runtime error:|still alive at exit")
+    endif()
+  endforeach()
+
   # The shadowed chapters (14 and every one built on it) with no light shadowed: an empty shadow
   # plan has no array to sort, and UBSan stops on qsort(NULL, 0, ...). Three ways to get there:
   # --shadows 0, no light at all, and a scene whose lights are all `shadow off`. Chapters 15-19
