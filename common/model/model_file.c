@@ -85,6 +85,24 @@ void model_quote(const char *text, char *out, size_t n)
     out[n ? k : 0] = '\0';
 }
 
+bool model_uri_decode(const char *uri, char *out, size_t n)
+{
+    size_t k = 0;
+    for (const char *c = uri; *c; c++) {
+        unsigned v;
+        if (k + 1 >= n)
+            return false;
+        if (*c != '%')
+            out[k++] = *c;
+        else if (!c[1] || !c[2] || sscanf(c + 1, "%2x", &v) != 1 || v == 0)
+            return false;
+        else
+            out[k++] = (char)v, c += 2;
+    }
+    out[k] = '\0';
+    return true;
+}
+
 bool model_path_inside(const char *model, const char *path, long long *size, char *why, size_t n)
 {
     char folder[PATH_MAX], target[PATH_MAX], dir[PATH_MAX];

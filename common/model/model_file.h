@@ -28,6 +28,8 @@
  *   model_path_inside(model, path, size, why, n)
  *                                      whether `path` is a regular file inside the model's folder once
  *                                      `..` and symbolic links are resolved (*size: its bytes)
+ *   model_uri_decode(uri, out, n)      a URI's `%` escapes decoded ("a%20b.png" -> "a b.png"); false
+ *                                      on a broken escape, an escaped NUL, or no room in out[n]
  *   model_quote(text, out, n)          a message of Assimp's as one printable line, cut short
  *   model_read_file(path, lim, size, why, n)
  *                                      the whole of a regular file of at most lim->bytes, malloc'd
@@ -81,6 +83,7 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
                                    const model_limits *lim, unsigned post, char *why, size_t n);
 char *model_gltf_check(const char *name, const char *data, size_t size, bool siblings, const model_limits *lim,
                        size_t *out_size, char *why, size_t n);
+bool model_uri_decode(const char *uri, char *out, size_t n);
 bool model_path_inside(const char *model, const char *path, long long *size, char *why, size_t n);
 void model_quote(const char *text, char *out, size_t n);
 char *model_read_file(const char *path, const model_limits *lim, size_t *size, char *why, size_t n);

@@ -259,25 +259,6 @@ static long long data_uri_bytes(const char *uri)
     return base64 ? length / 4 * 3 + (length % 4 ? length % 4 - 1 : 0) : length;
 }
 
-/* "a%20b.bin" -> "a b.bin"; false on a broken escape or an escaped NUL. */
-static bool uri_decode(const char *uri, char *out, size_t n)
-{
-    size_t k = 0;
-    for (const char *c = uri; *c; c++) {
-        unsigned v;
-        if (k + 1 >= n)
-            return false;
-        if (*c != '%')
-            out[k++] = *c;
-        else if (!c[1] || !c[2] || sscanf(c + 1, "%2x", &v) != 1 || v == 0)
-            return false;
-        else
-            out[k++] = (char)v, c += 2;
-    }
-    out[k] = '\0';
-    return true;
-}
-
 /* A file a URI names, beside the model: relative, inside the model's folder once `..` and links
  * are resolved, a regular file of at most lim->bytes, all of them together too. */
 static bool uri_file(gltf *g, const char *uri, const char *what, long long index, char *path, size_t pn,
@@ -289,7 +270,7 @@ static bool uri_file(gltf *g, const char *uri, const char *what, long long index
     if (!g->siblings)
         return model_fail(g->why, g->n, "%s %lld names the file '%s', and this model is read without the files "
                           "beside it", what, index, quoted);
-    if (uri[0] == '/' || uri[0] == '\\' || (colon && (!slash || colon < slash)) || !uri_decode(uri, rel, sizeof rel))
+    if (uri[0] == '/' || uri[0] == '\\' || (colon && (!slash || colon < slash)) || !model_uri_decode(uri, rel, sizeof rel))
         return model_fail(g->why, g->n, "%s %lld: '%s' is not a relative path (files are read from the model's "
                           "folder)", what, index, quoted);
     const char *cut = strrchr(g->name, '/');

@@ -22,25 +22,6 @@ static bool image_kind_ok(const unsigned char *head, size_t size)
            (size >= sizeof jpeg && memcmp(head, jpeg, sizeof jpeg) == 0);
 }
 
-/* "a%20b.png" -> "a b.png"; false on a broken escape. */
-static bool uri_decode(const char *uri, char *out, size_t n)
-{
-    size_t k = 0;
-    for (const char *c = uri; *c; c++) {
-        if (k + 1 >= n)
-            return false;
-        unsigned v;
-        if (*c != '%')
-            out[k++] = *c;
-        else if (!c[1] || !c[2] || sscanf(c + 1, "%2x", &v) != 1 || v == 0)
-            return false;
-        else
-            out[k++] = (char)v, c += 2;
-    }
-    out[k] = '\0';
-    return true;
-}
-
 /* Its kind (PNG or JPEG) and size are checked from its header: nothing is decoded here. */
 bool model_image_check(const struct aiScene *sc, const char *model, const char *given, long long max_bytes,
                        model_image *out, char *why, size_t n)
@@ -68,7 +49,7 @@ bool model_image_check(const struct aiScene *sc, const char *model, const char *
             return model_fail(why, n, "%s: its header cannot be read (%s)", shown, stbi_failure_reason());
     } else {
         char rel[SCENE_PATH_MAX];
-        if (given[0] == '/' || strstr(given, "://") || !uri_decode(given, rel, sizeof rel))
+        if (given[0] == '/' || strstr(given, "://") || !model_uri_decode(given, rel, sizeof rel))
             return model_fail(why, n, "%s: not a relative path (images are read from beside the model)",
                               shown);
         const char *slash = strrchr(model, '/');
