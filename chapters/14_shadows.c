@@ -172,7 +172,7 @@ static bool frame_forward(app *a, GLuint target, bool plus)
 }
 
 /* --view atlas, --view importance: the atlas's tiles, or the lights over the picture, each in its
- * light's importance colour (chapters/shadow_views.c). */
+ * light's tier colour (chapters/shadow_views.c). */
 static bool draw_views(app *a)
 {
     frame_timer_mark("view");

@@ -13,7 +13,8 @@
  *   1. the G-buffer for PBR: the `reference` layout, 16 bytes a pixel with its depth (the runner picks
  *      it for a scene with metallic-roughness materials): RT0 base colour (sRGB) + occlusion, RT1 the
  *      octahedral normal in two half floats, metallic, and -1 - roughness, whose sign marks the material
- *   2. the lighting summed in linear radiance, then presented with an exposure (keys - and +)
+ *   2. the lighting summed in linear radiance, then presented with an exposure (keys - and +), the
+ *      forward renderers' too (R, and compare mode's left side)
  *   3. the channel views: what the geometry pass stored, one channel at a time (keys 1 to 8, --view);
  *      the emissive is RT2, a third target the G-buffer has only for a scene with emissive materials
  *   4. keys that change the light: the ambient (T, Y), and every light moved together (I J K L,
@@ -67,6 +68,7 @@ static struct {
     clusters c;
     shadow_atlas atlas; /* --shadows N: chapter 14's; nothing made without it */
     fbo linear;      /* RGBA32F: the lighting pass's linear radiance, before the exposure */
+    fbo forward_linear; /* RGBA32F + depth: the forward renderers' linear radiance, the same way */
     present_pass present;
     GLuint channels_program;
     float exposure;
@@ -103,6 +105,65 @@ static bool init(app *a)
 
 static bool resize(app *a) { return gbuffer_resize(&state.g, a->width, a->height); }
 
+/* f made, or made again, as d at the picture's size. */
+static bool fit_target(fbo *f, const fbo_desc *d, const app *a)
+{
+    if (f->id && f->width == a->width && f->height == a->height)
+        return true;
+    fbo_destroy(f);
+    return fbo_create(f, d, a->width, a->height);
+}
+
+/* 4. present: linear radiance times the exposure (1: the picture chapter 11 and forward draw),
+ * display-encoded into `target` */
+static bool present(app *a, GLuint linear, GLuint target)
+{
+    frame_timer_mark("present");
+    gl_pass_state_apply(&deferred_pass);
+    const present_pass_options options = {.tonemap = SHADER_TONEMAP_EXPOSURE, .exposure = state.exposure};
+    present_pass_draw(&state.present, linear, target, a->width, a->height, &options);
+    gl_pass_state_reset();
+    return gl_check("18 present");
+}
+
+/* The forward renderers (R, and compare mode's left side) at the same exposure: their linear
+ * radiance, then the same present pass, so that every picture of the chapter answers - and +. */
+static bool draw_forward_exposed(app *a, const char *renderer, GLuint target, app_forward_work *work)
+{
+    const fbo_desc d = {.color_formats = {GL_RGBA32F}, .color_count = 1, .depth_format = GL_DEPTH_COMPONENT32F,
+                        .name = "forward linear radiance"};
+    const app_forward_options o = {.count_pixels = a->options->bench && work, .linear_output = true};
+    return fit_target(&state.forward_linear, &d, a) &&
+           app_forward_draw(&a->forward, renderer, &a->gs, state.forward_linear.id, o, work) &&
+           present(a, state.forward_linear.color[0], target);
+}
+
+static bool draw_forward_compared(app *a, GLuint target) { return draw_forward_exposed(a, "forward", target, NULL); }
+
+/* R: forward or Forward+, at the exposure; an embedding caller's linear radiance has none. */
+static bool frame_forward(app *a)
+{
+    if (a->linear_output)
+        return app_render_forward(a);
+    app_forward_work work = {.shaded = -1, .lights_per_pixel = 1.0};
+    bool ok = draw_forward_exposed(a, a->cli->renderers[a->renderer], a->target.id, &work);
+    a->shaded_pixels = work.shaded, a->lights_per_pixel = work.lights_per_pixel;
+    a->view_drawn = "lit"; /* forward has no G-buffer channel to show */
+    return ok;
+}
+
+/* The overlay's lines: the G-buffer (when this frame drew one), then the exposure and the ambient. */
+static void write_overlay(app *a, bool drew_gbuffer)
+{
+    int n = 0;
+    if (drew_gbuffer)
+        n = snprintf(a->overlay_lines, sizeof a->overlay_lines, "G-buffer %s: %d bytes a pixel%s\n",
+                     gbuffer_layout_name(state.g.desc.layout), gbuffer_pixel_bytes(&state.g),
+                     state.g.desc.emissive ? ", with RT2 (emissive)" : "");
+    snprintf(a->overlay_lines + n, sizeof a->overlay_lines - (size_t)n,
+             "exposure %g (keys - and +), ambient x %g (keys T and Y)", state.exposure, state.ambient_scale);
+}
+
 /* 2. the views other than lit: one channel of the G-buffer, straight into the picture. */
 static bool draw_channel(app *a)
 {
@@ -121,28 +182,24 @@ static bool draw_channel(app *a)
 
 static bool frame(app *a)
 {
+    bool deferred = app_renderer_is(a, "deferred");
+    write_overlay(a, deferred);
     if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
         return false;
-    if (!app_renderer_is(a, "deferred"))
-        return app_render_forward(a);
+    if (!deferred)
+        return frame_forward(a);
 
     /* 1. geometry pass: the materials' images applied, the surface stored (the reference layout) */
     if (!gbuffer_render(&state.g, &a->gs))
         return false;
-    snprintf(a->overlay_lines, sizeof a->overlay_lines, "G-buffer %s: %d bytes a pixel%s",
-             gbuffer_layout_name(state.g.desc.layout), gbuffer_pixel_bytes(&state.g),
-             state.g.desc.emissive ? ", with RT2 (emissive)" : "");
+    if (app_view_is(a, "emissive") && !state.g.desc.emissive)
+        a->note = "this scene has no emissive material, so the G-buffer has no RT2: the emissive view is black";
     if (!app_view_is(a, "lit"))
         return draw_channel(a);
 
     /* 2. light assignment and 3. the lighting pass, in linear radiance (chapter 11's, unchanged) */
     const fbo_desc linear = {.color_formats = {GL_RGBA32F}, .color_count = 1, .name = "linear radiance"};
-    if (!(state.linear.id && state.linear.width == a->width && state.linear.height == a->height)) {
-        fbo_destroy(&state.linear);
-        if (!fbo_create(&state.linear, &linear, a->width, a->height))
-            return false;
-    }
-    if (!chapter_11_assign(&state.c, &a->gs))
+    if (!fit_target(&state.linear, &linear, a) || !chapter_11_assign(&state.c, &a->gs))
         return false;
     glBindFramebuffer(GL_FRAMEBUFFER, state.linear.id);
     glViewport(0, 0, a->width, a->height);
@@ -150,14 +207,7 @@ static bool frame(app *a)
         return false;
     gl_pass_state_reset();
     a->linear = &state.linear;
-
-    /* 4. present: times the exposure (1: the picture chapter 11 and forward draw), display-encoded */
-    frame_timer_mark("present");
-    gl_pass_state_apply(&deferred_pass);
-    const present_pass_options options = {.tonemap = SHADER_TONEMAP_EXPOSURE, .exposure = state.exposure};
-    present_pass_draw(&state.present, state.linear.color[0], a->target.id, a->width, a->height, &options);
-    gl_pass_state_reset();
-    return gl_check("18 present");
+    return present(a, state.linear.color[0], a->target.id);
 }
 
 /* Every light, and each of its keys, moved by d: the whole rig at once. */
@@ -212,6 +262,7 @@ static void cleanup(app *a)
     (void)a;
     present_pass_destroy(&state.present);
     fbo_destroy(&state.linear);
+    fbo_destroy(&state.forward_linear);
     clusters_destroy(&state.c);
     gbuffer_destroy(&state.g);
     shadow_atlas_destroy(&state.atlas);
@@ -220,6 +271,6 @@ static void cleanup(app *a)
 }
 
 const app_desc chapter_18 = {.cli = &cli, .init = init, .resize = resize, .frame = frame, .cleanup = cleanup,
-                             .key = key};
+                             .key = key, .draw_forward = draw_forward_compared};
 
 CHAPTER_MAIN(chapter_18)

@@ -72,7 +72,7 @@ bool shadow_views_draw_atlas(shadow_views *v, const shadow_atlas *s, int width, 
     for (int t = 0; t < n; t++) {
         const shadow_tile *tile = &p->tiles[t];
         float *it = &v->items[8 * t];
-        it[0] = (float)tile->x, it[1] = (float)tile->y, it[2] = (float)tile->size, it[3] = p->importance[tile->light];
+        it[0] = (float)tile->x, it[1] = (float)tile->y, it[2] = (float)tile->size, it[3] = (float)p->tier[tile->light];
         it[4] = shadow_far_plane(s->lights[tile->light].radius), it[5] = 1.0f, it[6] = it[7] = 0.0f;
     }
     glClearColor(0, 0, 0, 1);
@@ -106,7 +106,7 @@ bool shadow_views_draw_lights(shadow_views *v, const shadow_atlas *s, const gpu_
             continue;
         bool planned = s->enabled && i < p->light_cap; /* the plan ran this frame for every light */
         float *it = &v->items[8 * n++];
-        it[0] = c[0] / c[3], it[1] = c[1] / c[3], it[2] = 0.0f, it[3] = planned ? p->importance[i] : 0.0f;
+        it[0] = c[0] / c[3], it[1] = c[1] / c[3], it[2] = 0.0f, it[3] = planned ? (float)p->tier[i] : 0.0f;
         it[4] = 0.0f, it[5] = planned && p->status[i] == SHADOW_SHADOWED ? 1.0f : 0.0f, it[6] = it[7] = 0.0f;
     }
     const float radius[2] = {2.0f * DISC_RADIUS_PIXELS / (float)width, 2.0f * DISC_RADIUS_PIXELS / (float)height};

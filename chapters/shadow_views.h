@@ -1,11 +1,12 @@
-/* shadow_views.h - chapter 14's window views of its atlas, in one colour scale: each light's
- * importance (shaders/shadow_debug.frag; grey: a light without a shadow).
+/* shadow_views.h - chapter 14's window views of its atlas, in one colour scale: each light's tier,
+ * the size the plan gave its tiles after fitting the atlas (shaders/shadow_debug.frag; grey: a light
+ * without a shadow).
  *
  *   shadow_views_create(v)                       the program, its item table and an empty vertex array
  *   shadow_views_destroy(v)
  *   shadow_views_draw_atlas(v, s, width, height) --view atlas: the whole atlas in the middle square of
  *                                                the bound framebuffer (cleared black), each tile's
- *                                                depth tinted by its light's importance
+ *                                                depth tinted by its light's tier
  *   shadow_views_draw_lights(v, s, gs, width, height)
  *                                                --view importance: over the bound framebuffer's
  *                                                picture, a disc at each light in front of the eye,

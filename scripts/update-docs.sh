@@ -16,7 +16,8 @@
 #                   (scripts/shadow-table.sh), and the issue's targets met or missed
 #   shadows.md      chapter 14 against exact shadow rays (the hard.shadow_reference_* tests' tables)
 #                   and the teapots' shadow pass with and without the culling (scripts/shadow-error.sh)
-#   storage/        build/bin/bench --storage only at 320x240: what to store per pixel (docs/16);
+#   storage/        build/bin/bench --storage only at 320x240: what to store per pixel (docs/16):
+#                   bench_storage.md and .csv (a part run alone writes no bench.md);
 #                   that part alone (about 7 minutes): scripts/update-docs.sh --storage-only
 #   bench/          build/bin/bench's full sweep: bench.md, bench.csv, the two plots; its ambient
 #                   sweep (chapters 17 and 19 against chapter 11's lighting pass, then their errors
@@ -60,9 +61,9 @@ storage_table() {
   local storage_args=(--size 320x240 --frames 3 --warmup 1)
   $quick && storage_args=(--quick)
   build/bin/bench --storage only --out "$data/storage" --no-plots "${storage_args[@]}"
-  { printf '%s\n\n' "$stamp"; cat "$data/storage/bench.md"; } >"$data/storage/bench.md.tmp"
-  mv "$data/storage/bench.md.tmp" "$data/storage/bench.md"
-  echo "wrote $data/storage/bench.md"
+  { printf '%s\n\n' "$stamp"; cat "$data/storage/bench_storage.md"; } >"$data/storage/bench_storage.md.tmp"
+  mv "$data/storage/bench_storage.md.tmp" "$data/storage/bench_storage.md"
+  echo "wrote $data/storage/bench_storage.md"
 }
 if $storage_only; then
   storage_table

@@ -1,7 +1,9 @@
 #version 330 core
 // shadow_debug.frag - chapter 14's two debug views (shadow_debug.vert says what each item is), in one
-// colour scale: a light's importance (docs/14_shadows.md), blue at 1/16 and below (tier 3), through
-// cyan (tier 2), green and yellow (tier 1) to red at 1 (tier 0); grey: a light without a shadow.
+// colour scale: a light's tier, the size its tiles got this frame (docs/14_shadows.md): red tier 0
+// (1024 texels), yellow tier 1 (512), cyan tier 2 (256), blue tier 3 (128); grey: a light without a
+// shadow. The tier, not the importance it started from: the plan moves the least important lights
+// down a tier until the atlas holds them all, and the views show what it decided.
 //   --view atlas       each tile's depth, near the light bright, far dark, cleared (nothing) black,
 //                      times its light's colour
 //   --view importance  a disc with a dark rim at each light
@@ -16,19 +18,16 @@ out vec4 o_color;
 
 const float near_plane = 0.05; // SHADOW_NEAR (common/shadows/shadow_plan.h)
 
-vec3 importance_color(float importance)
+vec3 tier_color(float tier)
 {
-    float t = clamp((log2(max(importance, 1e-6)) + 4.0) / 4.0, 0.0, 1.0); // 1/16 -> 0, 1 -> 1
-    const vec3 ramp[5] = vec3[5](vec3(0.15, 0.25, 1.0), vec3(0.0, 0.85, 0.9), vec3(0.2, 0.9, 0.2), vec3(1.0, 0.9, 0.1),
-                                 vec3(1.0, 0.15, 0.1));
-    float x = t * 4.0;
-    int k = min(int(x), 3);
-    return mix(ramp[k], ramp[k + 1], x - float(k));
+    const vec3 colors[4] = vec3[4](vec3(1.0, 0.15, 0.1), vec3(1.0, 0.9, 0.1), vec3(0.0, 0.85, 0.9),
+                                   vec3(0.15, 0.25, 1.0));
+    return colors[clamp(int(tier + 0.5), 0, 3)];
 }
 
 void main()
 {
-    vec3 tint = v_more.y > 0.5 ? importance_color(v_item.w) : vec3(0.55);
+    vec3 tint = v_more.y > 0.5 ? tier_color(v_item.w) : vec3(0.55);
     if (u_mode == 0) {
         ivec2 texel = ivec2(v_item.xy + min(v_local * v_item.z, vec2(v_item.z - 1.0)));
         float d = texelFetch(u_atlas_depth, texel, 0).r;

@@ -1,10 +1,10 @@
 #version 330 core
 // shadow_debug.vert - chapter 14's two debug views (chapters/shadow_views.c): one quad per item, from
 // gl_VertexID and gl_InstanceID alone (no vertex buffers). Each item is two texels of u_items:
-//   --view atlas       a tile: (x, y, size in atlas texels, importance), (far plane, 1, 0, 0); the
+//   --view atlas       a tile: (x, y, size in atlas texels, tier), (far plane, 1, 0, 0); the
 //                      quad is the tile's square inside the atlas's square u_rect (NDC x, y of its
 //                      corner, its width and height), whose side is u_atlas_size texels
-//   --view importance  a light: (NDC x, y, 0, importance), (0, 1 if shadowed, 0, 0); the quad is a
+//   --view importance  a light: (NDC x, y, 0, tier), (0, 1 if shadowed, 0, 0); the quad is a
 //                      square of half-side u_radius (NDC) round the light's projection
 
 uniform samplerBuffer u_items;

@@ -77,6 +77,10 @@ bool app_render_forward(app *a)
     a->shaded_pixels = work.shaded;
     a->lights_per_pixel = work.lights_per_pixel;
     a->linear_written = a->linear_output;
+    /* forward draws the lit picture whatever view was chosen: it has no G-buffer to show (chapter 02
+     * calls that picture its view "final") */
+    if (a->view_drawn && strcmp(a->view_drawn, "final") != 0)
+        a->view_drawn = "lit";
     return ok;
 }
 
@@ -90,32 +94,50 @@ bool app_target_make(app *a)
 
 /* "geometry 3.10, lighting 8.20" from frame times summed over n frames; compare mode's passes are
  * not the chapter's. */
-static void format_passes(const frame_times *sum, int n, char *out, size_t size)
+static void write_passes(const frame_times *sum, int n, FILE *out)
 {
-    out[0] = '\0';
-    for (int k = 0, used = 0; k < sum->count && used >= 0 && (size_t)used < size; k++)
+    for (int k = 0, shown = 0; k < sum->count; k++)
         if (strcmp(sum->names[k], APP_COMPARE_PASS) != 0 && strcmp(sum->names[k], APP_COMPOSE_PASS) != 0)
-            used += snprintf(out + used, size - (size_t)used, "%s%s %.2f", used ? ", " : "", sum->names[k],
-                             sum->ms[k] / n);
+            fprintf(out, "%s%s %.2f", shown++ ? ", " : "", sum->names[k], sum->ms[k] / n);
 }
 
-/* The title shows the frame time the timer measured (never CPU submission time alone), its passes
- * and the clock, then forward's frame in compare mode; --verbose logs it too. */
+/* " | view lit", or " | view lit (not albedo)" when the frame could not draw the view chosen. */
+static void write_view(const app *a, FILE *out)
+{
+    if (!a->cli->views)
+        return;
+    const char *chosen = a->cli->views[a->view], *drawn = a->view_drawn ? a->view_drawn : chosen;
+    fprintf(out, " | view %s", drawn);
+    if (strcmp(drawn, chosen) != 0)
+        fprintf(out, " (not %s)", chosen);
+}
+
+/* The title shows the renderer and the view drawn, the frame time the timer measured (never CPU
+ * submission time alone), its passes and the clock, then forward's frame in compare mode (from frames
+ * that drew it); --verbose logs it too. As long as it needs to be (open_memstream). */
 static void update_title(const app *a, const frame_times *sum, int n, bool paused)
 {
-    char title[720], passes[320], fwd_part[64] = "";
+    char *title = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&title, &size);
+    if (!f)
+        return;
     const app_frame_split split = app_frame_split_of(sum);
     double ms = split.own_ms / n;
-    format_passes(sum, n, passes, sizeof passes);
-    if (split.forward_ms > 0)
-        snprintf(fwd_part, sizeof fwd_part, " | compare: forward %.2f ms", split.forward_ms / n);
-    snprintf(title, sizeof title, "%s | %s%s%s | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps; %s) [%s]%s | cut-off %.4g%s%s",
-             a->cli->program, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward",
-             a->cli->views ? " | view " : "", a->cli->views ? a->cli->views[a->view] : "", a->scene.light_count,
-             a->gs.culled_count, a->width, a->height, ms, ms > 0 ? 1000.0 / ms : 0.0, passes,
-             frame_timer_clock(&a->timer), fwd_part, a->cutoff, a->cutoff == 0 ? " (exact)" : "", paused ? " | paused" : "");
-    platform_set_title(title);
-    log_debug("window: %s", title);
+    fprintf(f, "%s | %s", a->cli->program, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward");
+    write_view(a, f);
+    fprintf(f, " | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps; ", a->scene.light_count, a->gs.culled_count,
+            a->width, a->height, ms, ms > 0 ? 1000.0 / ms : 0.0);
+    write_passes(sum, n, f);
+    fprintf(f, ") [%s]", frame_timer_clock(&a->timer));
+    if (split.forward_timed)
+        fprintf(f, " | compare: forward %.2f ms", split.forward_ms / n);
+    fprintf(f, " | cut-off %.4g%s%s", a->cutoff, a->cutoff == 0 ? " (exact)" : "", paused ? " | paused" : "");
+    if (fclose(f) == 0 && title) {
+        platform_set_title(title);
+        log_debug("window: %s", title);
+    }
+    free(title);
 }
 
 static void next_choice(const char *const *choices, int *index, const char *what)
@@ -175,6 +197,8 @@ typedef struct loop {
     double last_clock, title_clock, move_clock;
     frame_times title_sum; /* the timer's frames since the title was last updated */
     int title_n;
+    const char *last_note; /* the frame's note last logged */
+    bool told_lines_full;
 } loop;
 
 /* Size changes (window, or a resize-cycle hook) recreate the targets. */
@@ -227,6 +251,21 @@ static void record_title(const app *a, loop *l, double now)
     }
 }
 
+/* What the frame said in words, logged when it changes: its note (the window shows it too), and a
+ * chapter's overlay lines that filled their room (cut: the room must grow). */
+static void tell_frame_words(const app *a, loop *l)
+{
+    if (a->note && a->note != l->last_note)
+        log_info("note: %s", a->note);
+    l->last_note = a->note;
+    if (strlen(a->overlay_lines) + 1 >= sizeof a->overlay_lines && !l->told_lines_full) {
+        log_error("%s: its overlay lines filled all %zu bytes of app.overlay_lines and were cut: raise "
+                  "APP_OVERLAY_LINES",
+                  a->cli->program, sizeof a->overlay_lines);
+        l->told_lines_full = true;
+    }
+}
+
 /* One frame: update, draw, time; false stops the loop with *rc set when it failed. */
 static bool draw_frame(app *a, loop *l, int *rc)
 {
@@ -242,9 +281,13 @@ static bool draw_frame(app *a, loop *l, int *rc)
     a->shaded_pixels = -1;
     a->work_name = NULL;
     a->lights_per_pixel = 1.0;
+    a->overlay_lines[0] = '\0'; /* a frame that draws no G-buffer leaves no G-buffer line */
+    a->note = NULL;
+    a->view_drawn = a->cli->views ? a->cli->views[a->view] : NULL;
     bool ok = gpu_scene_update(&a->gs, a->time, a->cutoff, a->width, a->height) && l->desc->frame(a) &&
               app_window_compare(&l->window, a, l->desc->draw_forward);
     frame_timer_end(&a->timer);
+    tell_frame_words(a, l);
     if (!ok || (!gl_check("frame") && l->opt->gl_debug)) {
         *rc = EXIT_CODE_RUNTIME;
         return false;

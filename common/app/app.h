@@ -32,7 +32,8 @@
  * with --screenshot. When a->count_pixels (--bench, or the overlay is on) it counts its lighting
  * pass's fragments with a->query (gl_samples_begin/end) into a->shaded_pixels, and when each of them
  * loops over several lights sets a->lights_per_pixel (their product is the frame's light
- * evaluations); a->pass_state, when it sets it, is shown too, and so are a->overlay_lines. Two
+ * evaluations); a->pass_state, when it sets it, is shown too, and so are a->overlay_lines and a->note.
+ * The overlay and the title name the renderer and the view the frame drew (a->view_drawn). Two
  * requests only an embedding caller makes: a->linear_output asks for linear radiance into a float a->target (a chapter that can sets
  * a->linear_written), and a chapter whose frame sums linear radiance before its present pass points
  * a->linear at that buffer.
@@ -47,6 +48,10 @@
 #include "gpu_scene.h"
 #include "keys.h"
 #include "scene.h"
+
+/* The chapter's overlay lines' room: more than any chapter writes; one that fills it is told (the
+ * runner logs it), never cut silently. */
+#define APP_OVERLAY_LINES 512
 
 typedef struct app {
     const cli_options *options;
@@ -71,7 +76,14 @@ typedef struct app {
     bool linear_written; /* the chapter did so this frame */
     const fbo *linear;   /* the chapter's linear sum of this frame (before present), or NULL */
     const gl_pass_state *pass_state; /* the chapter's lighting pass state, shown by the overlay */
-    char overlay_lines[320];         /* the chapter's own overlay lines, set by its frame ("": none) */
+    char overlay_lines[APP_OVERLAY_LINES]; /* the chapter's own overlay lines, set by each frame that
+                                            * draws what they describe ("": none; the runner empties
+                                            * them before every frame) */
+    const char *view_drawn; /* the view the frame drew: the runner sets the chosen one before it;
+                             * app_render_forward "lit" (a forward renderer draws no other view) */
+    const char *note;       /* set by the frame when its picture needs a word (a view that has
+                             * nothing to show on this scene): a string that outlives the frame,
+                             * shown even with the overlay off; the runner clears it before every frame */
     char default_scene[4200]; /* the data folder's default scene, when no --scene was given */
     bool input_error; /* set by init when what failed was an option's value (beyond the context's
                        * limit): the run exits 2, not 1 */

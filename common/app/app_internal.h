@@ -73,13 +73,19 @@ const char *const *app_with_forward_plus(const char *const *list, const char **o
  *   app_window_display(w, a, paused)   the picture with the overlay: what the window shows
  *   app_window_after_frame(w, a, shown, paused, &rc)
  *                                      the script's after-frame events; false: stop (rc says why)
- *   app_window_overlay_text(w, a, paused, out, size)
+ *   app_window_overlay_text(w, a, paused)
+ *                                      the overlay's lines, a string to free (as long as they are:
+ *                                      no fixed buffer cuts them); NULL when out of memory (logged)
+ *   app_window_key_list_text(a)        F1's list of the chapter's keys, the same way
  *   app_window_save(fbo, path)         colour attachment 0 as an image file */
 #define APP_COMPARE_PASS "compare forward" /* forward's whole frame in compare mode, as one pass */
 #define APP_COMPOSE_PASS "compare compose" /* both pictures into the one shown: neither side's time */
-/* A frame's time split into the chapter's own and compare mode's two passes (zero when off). */
+/* A frame's time split into the chapter's own and compare mode's two passes (zero when off);
+ * forward_timed: the frame has forward's pass, so forward_ms is its time (a frame drawn without it,
+ * or not yet read back, has none: its 0 is no measurement). */
 typedef struct app_frame_split {
     double own_ms, forward_ms, compose_ms;
+    bool forward_timed;
 } app_frame_split;
 app_frame_split app_frame_split_of(const frame_times *t);
 
@@ -116,7 +122,8 @@ bool app_window_key(app_window *w, app *a, key_action action);
 bool app_window_compare(app_window *w, app *a, bool (*draw_forward)(app *a, GLuint target));
 const fbo *app_window_display(app_window *w, app *a, bool paused);
 bool app_window_after_frame(app_window *w, app *a, const fbo *shown, bool paused, int *rc);
-int app_window_overlay_text(const app_window *w, const app *a, bool paused, char *out, size_t size);
+char *app_window_overlay_text(const app_window *w, const app *a, bool paused);
+char *app_window_key_list_text(const app *a);
 bool app_window_save(const fbo *f, const char *path);
 
 #endif

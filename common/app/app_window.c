@@ -12,7 +12,6 @@
 #include "platform.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -230,7 +229,7 @@ app_frame_split app_frame_split_of(const frame_times *t)
     app_frame_split s = {.own_ms = t->frame_ms};
     for (int k = 0; k < t->count; k++) {
         if (strcmp(t->names[k], APP_COMPARE_PASS) == 0)
-            s.forward_ms += t->ms[k];
+            s.forward_ms += t->ms[k], s.forward_timed = true;
         else if (strcmp(t->names[k], APP_COMPOSE_PASS) == 0)
             s.compose_ms += t->ms[k];
     }
@@ -311,65 +310,119 @@ static int describe_pass(const gl_pass_state *s, char *out, size_t size)
                     s->stencil_func ? gl_name(s->stencil_func) : "", s->stencil_func ? " 0" : "");
 }
 
-/* Appends printf-style text at out[*used]; never overflows. */
-static void put(char *out, size_t size, size_t *used, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
-static void put(char *out, size_t size, size_t *used, const char *fmt, ...)
-{
-    if (*used >= size)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(out + *used, size - *used, fmt, ap);
-    va_end(ap);
-    *used = n < 0 ? size : *used + (size_t)n;
-}
-
-/* The frame's time split into the chapter's side and compare mode's passes. */
-static void put_times(const app_window *w, const app *a, char *out, size_t size, size_t *used)
+/* The frame's time split into the chapter's side and compare mode's passes. Compare mode's figure comes
+ * from frames that drew forward: the half-second average while it holds them, else the last frame; a
+ * frame without forward's pass (M pressed since, or the timer's queries one frame behind) says so,
+ * never "forward 0.00 ms". */
+static void put_times(const app_window *w, const app *a, FILE *out)
 {
     /* the half-second average; the last frame's times until there is one (a single headless frame) */
     const frame_times *t = w->times.count > 0 ? &w->times : &a->timer.last;
+    if (w->compare != COMPARE_OFF && !app_frame_split_of(t).forward_timed)
+        t = &a->timer.last;
     const app_frame_split split = app_frame_split_of(t);
-    put(out, size, used, "passes (ms):");
+    fprintf(out, "passes (ms):");
     for (int k = 0, shown = 0; k < t->count; k++)
         if (strcmp(t->names[k], APP_COMPARE_PASS) != 0 && strcmp(t->names[k], APP_COMPOSE_PASS) != 0)
-            put(out, size, used, "%s %s %.2f", shown++ ? "," : "", t->names[k], t->ms[k]);
-    put(out, size, used, "\nframe %.2f ms = %.0f fps (clock: %s)\n", split.own_ms,
-        split.own_ms > 0 ? 1000.0 / split.own_ms : 0.0, frame_timer_clock(&a->timer));
-    if (w->compare != COMPARE_OFF)
-        put(out, size, used, "compare %s: forward %.2f ms (left) | %s %.2f ms (right)\n", compare_mode_name(w->compare),
-            split.forward_ms, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward", split.own_ms);
+            fprintf(out, "%s %s %.2f", shown++ ? "," : "", t->names[k], t->ms[k]);
+    fprintf(out, "\nframe %.2f ms = %.0f fps (clock: %s)\n", split.own_ms, split.own_ms > 0 ? 1000.0 / split.own_ms : 0.0,
+            frame_timer_clock(&a->timer));
+    if (w->compare == COMPARE_OFF)
+        return;
+    const char *renderer = a->cli->renderers ? a->cli->renderers[a->renderer] : "forward";
+    if (split.forward_timed)
+        fprintf(out, "compare %s: forward %.2f ms (left) | %s %.2f ms (right)\n", compare_mode_name(w->compare),
+                split.forward_ms, renderer, split.own_ms);
+    else
+        fprintf(out, "compare %s: forward not timed yet (left) | %s %.2f ms (right)\n", compare_mode_name(w->compare),
+                renderer, split.own_ms);
 }
 
-int app_window_overlay_text(const app_window *w, const app *a, bool paused, char *out, size_t size)
+/* "view lit" when the frame drew the view chosen; when it could not (a forward renderer has no G-buffer
+ * to show), the view it drew and why. */
+static void put_view(const app *a, FILE *out)
 {
-    size_t used = 0;
-    put(out, size, &used, "%s | renderer %s%s%s | %dx%d\n", a->cli->program,
-        a->cli->renderers ? a->cli->renderers[a->renderer] : "forward", a->cli->views ? " | view " : "",
-        a->cli->views ? a->cli->views[a->view] : "", a->width, a->height);
-    put(out, size, &used, "lights %d active, %d culled (cut-off %.4g%s, %s falloff)\n", a->gs.light_count,
-        a->gs.culled_count, a->cutoff, a->cutoff == 0 ? ": exact" : "",
-        a->gs.falloff == SHADER_FALLOFF_WINDOWED ? "windowed" : "hard");
-    put_times(w, a, out, size, &used);
+    if (!a->cli->views)
+        return;
+    const char *chosen = a->cli->views[a->view], *drawn = a->view_drawn ? a->view_drawn : chosen;
+    fprintf(out, " | view %s", drawn);
+    if (strcmp(drawn, chosen) != 0)
+        fprintf(out, " (%s has no %s view: R)", a->cli->renderers ? a->cli->renderers[a->renderer] : "forward",
+                chosen);
+}
+
+/* The overlay's lines, written to out. */
+static void write_overlay(const app_window *w, const app *a, bool paused, FILE *out)
+{
+    fprintf(out, "%s | renderer %s", a->cli->program, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward");
+    put_view(a, out);
+    fprintf(out, " | %dx%d\n", a->width, a->height);
+    if (a->note)
+        fprintf(out, "note: %s\n", a->note);
+    fprintf(out, "lights %d active, %d culled (cut-off %.4g%s, %s falloff)\n", a->gs.light_count, a->gs.culled_count,
+            a->cutoff, a->cutoff == 0 ? ": exact" : "", a->gs.falloff == SHADER_FALLOFF_WINDOWED ? "windowed" : "hard");
+    put_times(w, a, out);
     const char *work = a->work_name ? a->work_name : "lighting fragments";
     if (a->shaded_pixels >= 0 && w->ideal > 0 && paused)
-        put(out, size, &used, "%s %ld = %.2f x the ideal %lld (pixel, light) pairs\n", work,
-            a->shaded_pixels, (double)a->shaded_pixels / (double)w->ideal, w->ideal);
+        fprintf(out, "%s %ld = %.2f x the ideal %lld (pixel, light) pairs\n", work, a->shaded_pixels,
+                (double)a->shaded_pixels / (double)w->ideal, w->ideal);
     else if (a->shaded_pixels >= 0)
-        put(out, size, &used, "%s %ld = %.2f per pixel (Space: pause to count the ideal)\n", work,
-            a->shaded_pixels, (double)a->shaded_pixels / ((double)a->width * a->height));
+        fprintf(out, "%s %ld = %.2f per pixel (Space: pause to count the ideal)\n", work, a->shaded_pixels,
+                (double)a->shaded_pixels / ((double)a->width * a->height));
     if (a->pass_state && !app_renderer_is_forward(a)) { /* the chapter's own renderer */
         char pass[160];
-        describe_pass(a->pass_state, pass, sizeof pass);
-        put(out, size, &used, "lighting pass: %s\n", pass);
+        describe_pass(a->pass_state, pass, sizeof pass); /* bounded: GL names and fixed words */
+        fprintf(out, "lighting pass: %s\n", pass);
     }
     if (a->overlay_lines[0]) /* the chapter's own */
-        put(out, size, &used, "%s\n", a->overlay_lines);
+        fprintf(out, "%s\n", a->overlay_lines);
     const scene_camera *c = &a->scene.camera;
-    put(out, size, &used, "eye %.2f %.2f %.2f  target %.2f %.2f %.2f\n", (double)c->eye[0], (double)c->eye[1],
-        (double)c->eye[2], (double)c->target[0], (double)c->target[1], (double)c->target[2]);
-    put(out, size, &used, "%sH hides this, F1 lists the keys", paused ? "PAUSED (Space resumes) | " : "");
-    return (int)used;
+    fprintf(out, "eye %.2f %.2f %.2f  target %.2f %.2f %.2f\n", (double)c->eye[0], (double)c->eye[1],
+            (double)c->eye[2], (double)c->target[0], (double)c->target[1], (double)c->target[2]);
+    fprintf(out, "%sH hides this, F1 lists the keys", paused ? "PAUSED (Space resumes) | " : "");
+}
+
+/* What write_text(out) writes, as a string to free, as long as it is (open_memstream): no buffer of
+ * a fixed size can cut it. NULL when out of memory (logged). */
+static char *text_of(const app_window *w, const app *a, bool paused,
+                     void (*write_text)(const app_window *w, const app *a, bool paused, FILE *out))
+{
+    char *text = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&text, &size);
+    if (f) {
+        write_text(w, a, paused, f);
+        if (fclose(f) != 0)
+            free(text), text = NULL;
+    }
+    if (!text)
+        log_error("window: out of memory for the overlay's text");
+    return text;
+}
+
+char *app_window_overlay_text(const app_window *w, const app *a, bool paused)
+{
+    return text_of(w, a, paused, write_overlay);
+}
+
+/* F1's list: the chapter's keys as --help lists them, without the blank line that starts it there. */
+static void write_key_list(const app_window *w, const app *a, bool paused, FILE *out)
+{
+    (void)w, (void)paused;
+    char *list = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&list, &size);
+    if (!f)
+        return;
+    keys_print_help(f, a->cli->program, a->cli->views != NULL);
+    if (fclose(f) == 0 && list)
+        fputs(list[0] == '\n' ? list + 1 : list, out);
+    free(list);
+}
+
+char *app_window_key_list_text(const app *a)
+{
+    return text_of(NULL, a, false, write_key_list);
 }
 
 /* ---- what the window shows ----------------------------------------------------------------- */
@@ -402,26 +455,26 @@ const fbo *app_window_display(app_window *w, app *a, bool paused)
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, w->display.id);
     glBlitFramebuffer(0, 0, a->width, a->height, 0, 0, a->width, a->height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    char text[2048];
     const float content = platform_content_scale();
     if (w->key_list_on) { /* F1's list replaces the overlay while it shows: one box, readable */
-        FILE *f = fmemopen(text, sizeof text - 1, "w");
-        if (f) {
-            keys_print_help(f, a->cli->program, a->cli->views != NULL);
-            text[ftell(f)] = '\0';
-            fclose(f);
-            overlay_draw(&w->text, w->display.id, a->width, a->height, text + 1, OVERLAY_TOP_LEFT, content);
-        }
+        char *keys = app_window_key_list_text(a);
+        if (keys)
+            overlay_draw(&w->text, w->display.id, a->width, a->height, keys, OVERLAY_TOP_LEFT, content);
+        free(keys);
         return &w->display;
     }
     if (w->overlay_on && paused)
         count_ideal(w, a);
     if (w->overlay_on) {
-        app_window_overlay_text(w, a, paused, text, sizeof text);
-        overlay_draw(&w->text, w->display.id, a->width, a->height, text, OVERLAY_TOP_LEFT, content);
+        char *text = app_window_overlay_text(w, a, paused);
+        if (text)
+            overlay_draw(&w->text, w->display.id, a->width, a->height, text, OVERLAY_TOP_LEFT, content);
+        free(text);
     } else if (platform_time() < w->badge_until) {
         overlay_draw(&w->text, w->display.id, a->width, a->height, paused ? "PAUSED (Space resumes)" : "RESUMED",
                      OVERLAY_TOP_LEFT, content);
+    } else if (a->note) { /* the overlay, when on, has it as a line */
+        overlay_draw(&w->text, w->display.id, a->width, a->height, a->note, OVERLAY_TOP_LEFT, content);
     }
     mark_new_light(w, a, &w->text, w->display.id);
     return &w->display;
@@ -450,7 +503,7 @@ bool app_window_after_frame(app_window *w, app *a, const fbo *shown, bool paused
     input_script_range(&w->script, a->frame_index, &first, &count);
     for (int i = first; i < first + count; i++) {
         const script_event *e = &w->script.events[i];
-        char text[2048];
+        char *text = NULL;
         switch (e->kind) {
         case SCRIPT_SCREENSHOT:
             if (!app_window_save(shown, e->path)) {
@@ -458,13 +511,14 @@ bool app_window_after_frame(app_window *w, app *a, const fbo *shown, bool paused
                 return false;
             }
             break;
-        case SCRIPT_OVERLAY:
+        case SCRIPT_OVERLAY: /* what the window shows: F1's list while it shows, else the overlay */
             if (paused)
                 count_ideal(w, a);
-            app_window_overlay_text(w, a, paused, text, sizeof text);
-            for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n"))
-                printf("overlay: %s\n", line);
+            text = w->key_list_on ? app_window_key_list_text(a) : app_window_overlay_text(w, a, paused);
+            for (char *line = text ? strtok(text, "\n") : NULL; line; line = strtok(NULL, "\n"))
+                printf("%s: %s\n", w->key_list_on ? "keys" : "overlay", line);
             fflush(stdout);
+            free(text);
             break;
         case SCRIPT_OBJECTS_MARK:
         case SCRIPT_OBJECTS_CHECK:

@@ -11,9 +11,13 @@
  *                                              screen's content scale (2x at 480 px on a 1x screen),
  *                                              never so large that a line of OVERLAY_MIN_COLUMNS
  *                                              characters would not fit; lines wider than the
- *                                              picture wrap (at a space, indented), and lines below
- *                                              its bottom are cut, the last saying so: the box
- *                                              never leaves the picture, and only it is dimmed
+ *                                              picture wrap (at a space, indented); a text taller
+ *                                              than the picture is drawn smaller (down to 1x), and
+ *                                              only lines below its bottom at 1x are cut, the last
+ *                                              saying so and a warning logged once: the box
+ *                                              never leaves the picture, and only it is dimmed.
+ *                                              Any length: no buffer of a fixed size holds the
+ *                                              text, and the quads' room grows with it
  *   overlay_draw_label(o, fbo, width, height, text, x, y, content_scale)
  *                                              one short line in its box with its top-left corner at
  *                                              pixel (x, y) from the top-left, kept inside the picture
@@ -32,8 +36,9 @@ typedef enum overlay_corner { OVERLAY_TOP_LEFT, OVERLAY_TOP_RIGHT } overlay_corn
 
 typedef struct overlay {
     GLuint program, vao, vertices, indices;
-    int quad_capacity;
-    void *scratch; /* stb_easy_font's vertices before upload */
+    int quad_capacity; /* quads the buffers hold now; they grow for a longer text */
+    int lines_cut;     /* by the last overlay_draw: the warning is logged when it changes */
+    void *scratch;     /* stb_easy_font's vertices before upload */
 } overlay;
 
 bool overlay_create(overlay *o);

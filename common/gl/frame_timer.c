@@ -83,11 +83,11 @@ void frame_timer_mark(const char *name)
     frame_timer *t = active;
     if (!t || t->held || (t->in_pass && strcmp(t->current.names[t->current.count - 1], name) == 0))
         return; /* not timing, held, or the same pass goes on */
-    close_pass(t);
-    if (t->current.count == FRAME_TIMER_MAX_PASSES) {
+    if (t->current.count == FRAME_TIMER_MAX_PASSES) { /* the pass running goes on: its time takes this one in */
         log_warn("frame_timer: more than %d passes; '%s' is counted in the last", FRAME_TIMER_MAX_PASSES, name);
         return;
     }
+    close_pass(t);
     t->current.names[t->current.count++] = name;
     if (t->gpu)
         glBeginQuery(GL_TIME_ELAPSED, t->queries[t->slot][t->current.count - 1]);

@@ -21,7 +21,8 @@
  *   scroll DY    wheel steps (positive: zoom in)
  *   screenshot PATH                   after the frame: what the window shows (overlay included);
  *                                     PATH's folder found at load, current folder then data folder
- *   overlay      after the frame: print the overlay's text to stdout, each line "overlay: ..."
+ *   overlay      after the frame: print the overlay's text to stdout, each line "overlay: ..." (while
+ *                F1's list shows, which replaces it in the window: that list, each line "keys: ...")
  *   objects mark | objects check      after the frame: remember the number of live GL objects /
  *                                     fail the run unless it is the remembered number (leaks)
  *   quit         after the frame: stop

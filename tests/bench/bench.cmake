@@ -45,3 +45,13 @@ add_test(NAME bench.reopen
   COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/bench/run_bench_reopen.sh $<TARGET_FILE:bench> ${CMAKE_BINARY_DIR}/bench-reopen
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(bench.reopen PROPERTIES LABELS "bench" SKIP_RETURN_CODE 77 TIMEOUT 300)
+
+# Signed differences in the reports (tools/bench/bench_format.c): "-157", never "+-157".
+target_sources(bench PRIVATE ${CMAKE_SOURCE_DIR}/tools/bench/bench_format.c)
+add_executable(test_bench_format ${CMAKE_SOURCE_DIR}/tests/bench/test_bench_format.c
+               ${CMAKE_SOURCE_DIR}/tools/bench/bench_format.c)
+target_include_directories(test_bench_format PRIVATE ${CMAKE_SOURCE_DIR}/tools/bench ${CMAKE_SOURCE_DIR}/tests/unit)
+target_link_libraries(test_bench_format PRIVATE PkgConfig::CMOCKA m)
+set_target_properties(test_bench_format PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+add_test(NAME bench.format_signed COMMAND test_bench_format)
+set_tests_properties(bench.format_signed PROPERTIES LABELS unit)

@@ -7,14 +7,21 @@
 # blur 0, 2 at radius 0.5), each timed, with finite errors in A (0 to 1) over some pixels;
 # bench_ambient_ibl.csv, roughness 0, 0.25 ... 1, each error a finite number. The shape only, never
 # the timings (they depend on the machine), nor the errors' size (hard.ssao_reference and
-# hard.ibl_reference bound those).
+# hard.ibl_reference bound those). Run alone, the part writes its four files only: the main sweep's
+# files seeded in OUTDIR stay as they were, the plan names the part (not a sweep), the last line
+# names those four files, and no difference prints with two signs (tests/bench/partial_run.sh).
 set -u
+. "$(dirname "$0")/partial_run.sh"
 bench=$1 out=$2
 rm -rf "$out"
-"$bench" --quick --ambient-sweep only --no-plots --quiet --out "$out"
+mkdir -p "$out"
+partial_seed "$out"
+"$bench" --quick --ambient-sweep only --quiet --out "$out" >"$out.stdout" 2>"$out.stderr"
 rc=$?
 [ $rc -eq 77 ] && exit 77
-[ $rc -ne 0 ] && { echo "FAIL: bench exited with $rc"; exit 1; }
+[ $rc -ne 0 ] && { echo "FAIL: bench exited with $rc"; cat "$out.stderr"; exit 1; }
+partial_check "$out" "$out.stdout" "$out.stderr" \
+    bench_ambient.md bench_ambient.csv bench_ambient_ssao.csv bench_ambient_ibl.csv || exit 1
 csv="$out/bench_ambient.csv"
 [ -f "$csv" ] && [ -f "$out/bench_ambient.md" ] || { echo "FAIL: no $csv or bench_ambient.md"; exit 1; }
 awk -F, 'NR == 1 { if ($1 != "scene" || NF != 14) { print "FAIL: header: " $0; bad = 1 }; next }

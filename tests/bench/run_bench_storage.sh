@@ -7,13 +7,17 @@
 # is measured or says why not. The timing-only rows (chapter 16's visibility pass cut down, --vis-pass
 # no-primitive-id and depth-only) are timed, with no bytes and no error, and the section's last table
 # puts their first pass beside the compact G-buffer's and the visibility buffer's: a time in each
-# cell, none checked against another. Exit 77 (no GL context) passes through as a skip.
+# cell, none checked against another. Run alone, the part writes bench_storage.csv and
+# bench_storage.md only: the main sweep's files seeded in OUT_DIR stay as they were, and its last line
+# names those two files (tests/bench/partial_run.sh). Exit 77 (no GL context) passes through as a skip.
 set -u
 . "$(dirname "$0")/../lib/args.sh"
+. "$(dirname "$0")/partial_run.sh"
 args_expect 2 "$@"
 bench=$1
 out=$2
 args_fresh_dir "$out"
+partial_seed "$out"
 "$bench" --quick --storage only --out "$out" >"$out.stdout" 2>"$out.stderr"
 rc=$?
 if [ "$rc" -eq 77 ]; then
@@ -23,9 +27,10 @@ fi
 if [ "$rc" -ne 0 ]; then
     echo "FAIL: bench --quick --storage only exited $rc"; cat "$out.stderr"; exit 1
 fi
-for f in bench_storage.csv bench.md; do
+for f in bench_storage.csv bench_storage.md; do
     [ -s "$out/$f" ] || { echo "FAIL: $out/$f missing or empty"; exit 1; }
 done
+partial_check "$out" "$out.stdout" "$out.stderr" bench_storage.csv bench_storage.md || exit 1
 
 # The CSV: its header; per (renderer, samples) one `total` row, after its passes when measured.
 awk -F, '
@@ -84,17 +89,18 @@ END {
 }' "$out/bench_storage.csv" || exit 1
 
 # The report: the section, its targets, one table row per (renderer, samples).
-grep -q "^## What to store per pixel" "$out/bench.md" || { echo "FAIL: bench.md lacks the section"; exit 1; }
+md="$out/bench_storage.md"
+grep -q "^## What to store per pixel" "$md" || { echo "FAIL: bench_storage.md lacks the section"; exit 1; }
 for n in 1 4; do
     grep -q "^- the visibility buffer stores at most 8 bytes per sample, depth included, at $n sample(s): measured [0-9.]*.*: met$" \
-        "$out/bench.md" || { echo "FAIL: the $n-sample target line: $(grep 'stores at most' "$out/bench.md")"; exit 1; }
+        "$md" || { echo "FAIL: the $n-sample target line: $(grep 'stores at most' "$md")"; exit 1; }
 done
 rows=$(awk '/^## What to store per pixel/ { s = 1 } s && /^### default/ { t = 1; next } /^#/ { t = 0 }
-            t && /^\| [a-z]/ && !/^\| renderer/' "$out/bench.md" | wc -l)
+            t && /^\| [a-z]/ && !/^\| renderer/' "$md" | wc -l)
 [ "$rows" -eq 14 ] || { echo "FAIL: the default scene's table has $rows rows, want 14"; exit 1; }
 # ... and its last part: the first passes side by side, one row per sample count, a time in each cell.
 times=$(awk '/^## / { s = ($0 == "## What to store per pixel") } s && /^### / { t = ($0 == "### What the visibility pass'"'"'s time is made of") }
-             s && t' "$out/bench.md")
+             s && t' "$md")
 grep -q '^| scene | samples | compact G-buffer: geometry | visibility pass | without gl_PrimitiveID | depth only |$' <<<"$times" ||
     { echo "FAIL: no table \"What the visibility pass's time is made of\" in the storage section"; exit 1; }
 for n in 1 4; do

@@ -34,10 +34,16 @@ function(chapter_14_tests)
     COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/chapters/run_shadow_exercise.sh $<TARGET_FILE:${C}>
             $<TARGET_FILE:imgdiff> ${COURSE_TEST_OUT}/14_exercise_2 ${S})
   set_tests_properties(pages.14_exercise_2 PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
-  # The window's views of the atlas: each tile's depth in its light's importance colour, and a disc
-  # per light in the same colours over the picture.
+  # The window's views of the atlas: each tile's depth in its light's tier colour, and a disc per
+  # light in the same colours over the picture; the discs, counted by colour, are the plan's tiers
+  # and the counts the page's caption gives (tests/chapters/run_importance_tiers.sh).
   course_golden_test(14_shadows_atlas ${C} 1 0.0001 --scene ${A}/teapots.scene --view atlas)
   course_golden_test(14_shadows_importance ${C} 1 0.0001 --scene ${A}/teapots.scene --view importance)
+  add_test(NAME chapters.14_importance_tiers
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/chapters/run_importance_tiers.sh $<TARGET_FILE:${C}>
+            ${COURSE_TEST_OUT}/14_importance_tiers ${A}/teapots.scene ${CMAKE_SOURCE_DIR}/docs/14_shadows.md
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(chapters.14_importance_tiers PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
 
   # The window's K and overlay, driven by a --script: K off is chapter 11's picture and K on again
   # chapter 14's; the overlay counts the lights and tiles, and times the shadow pass on its own.

@@ -3,22 +3,27 @@
 # at --quick's size: bench_gbuffer.csv has one row per (scene, layout), its numbers are finite or
 # NA, and what the layouts promise shows in them: the default is at most 12 bytes, the normal error
 # follows the bits (2x8 > 2x12 > 2x16, each within tests/unit/test_octahedral.c's bound), reversed-Z
-# rebuilds far positions more precisely than the standard float depth, and bench.md has the section.
+# rebuilds far positions more precisely than the standard float depth, and bench_gbuffer.md has the section.
 # The third scene, pbr_teapots (metallic-roughness materials), is drawn by the layouts that can hold it
 # (reference and oct16) only, oct16's normal the finer; every other layout has its row, untimed,
 # saying it cannot hold them.
-# Timings are never checked.
+# Timings are never checked. Run alone, the part writes bench_gbuffer.csv and bench_gbuffer.md only:
+# the main sweep's files seeded in OUT_DIR stay as they were (tests/bench/partial_run.sh).
 set -u
 . "$(dirname "$0")/../lib/args.sh"
+. "$(dirname "$0")/../bench/partial_run.sh"
 args_expect 2 "$@"
 bench=$1
 out=$2
 args_fresh_dir "$out"
+partial_seed "$out"
 "$bench" --quick --gbuffer-sweep only --out "$out" >"$out.stdout" 2>"$out.stderr"
 rc=$?
 if [ "$rc" -eq 77 ]; then echo "skip: no GL context"; exit 77; fi
 if [ "$rc" -ne 0 ]; then echo "FAIL: bench --gbuffer-sweep only exited $rc"; cat "$out.stderr"; exit 1; fi
-grep -q "^## G-buffer layouts" "$out/bench.md" || { echo "FAIL: bench.md lacks '## G-buffer layouts'"; exit 1; }
+partial_check "$out" "$out.stdout" "$out.stderr" bench_gbuffer.csv bench_gbuffer.md || exit 1
+grep -q "^## G-buffer layouts" "$out/bench_gbuffer.md" ||
+    { echo "FAIL: bench_gbuffer.md lacks '## G-buffer layouts'"; exit 1; }
 awk -F, '
 NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; ncol = NF; next }
 {

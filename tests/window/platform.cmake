@@ -68,3 +68,27 @@ if(TARGET 07_face_culling AND TARGET 11_clustered)
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(overlay.fit PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
 endif()
+
+# F1's key list, the longest of all chapters, is shown whole: no fixed buffer cuts it, and the picture
+# holds it at the default size (tests/window/run_key_list.sh).
+set(COURSE_KEY_LIST_CHAPTERS)
+foreach(chapter ${COURSE_CHAPTERS})
+  list(APPEND COURSE_KEY_LIST_CHAPTERS $<TARGET_FILE:${chapter}>)
+endforeach()
+add_test(NAME overlay.key_list
+  COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/window/run_key_list.sh ${COURSE_KEY_LIST_CHAPTERS}
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(overlay.key_list PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+
+# Compare mode reports forward's time honestly under load: never 0 ms for a frame that drew forward,
+# "not timed yet" for one whose figures predate M (tests/window/run_compare_honest.sh, a busy loop
+# beside it). Chapter 07 (the runner's forward, on the default scene) and 18 (its own forward, at the
+# exposure, on its PBR teapots).
+foreach(chapter 07_face_culling 18_pbr_materials)
+  if(TARGET ${chapter})
+    add_test(NAME compare.honest.${chapter}
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/window/run_compare_honest.sh $<TARGET_FILE:${chapter}>
+      WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+    set_tests_properties(compare.honest.${chapter} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  endif()
+endforeach()

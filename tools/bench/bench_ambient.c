@@ -3,6 +3,7 @@
 
 #include "app_embed.h"
 #include "bench_ambient_error.h"
+#include "bench_format.h"
 #include "bench_measure.h"
 #include "chapters.h"
 #include "frame_stats.h"
@@ -153,6 +154,13 @@ static void put_ms(FILE *f, double ms, const char *sep)
         fprintf(f, "%.1f%s", ms, sep);
 }
 
+/* A difference (the lighting over chapter 11's, the first frame's extra) with its sign. */
+static void put_change(FILE *f, double ms, const char *sep)
+{
+    char text[32];
+    fprintf(f, "%s%s", bench_format_change(ms, 1, text, sizeof text), sep);
+}
+
 static bool write_results(const bench_options *o, ambient_row rows[SCENES][CHAPTERS])
 {
     char path[1100];
@@ -185,8 +193,8 @@ static bool write_results(const bench_options *o, ambient_row rows[SCENES][CHAPT
                 put_ms(md, r->ms[j], " | ");
             }
             fprintf(csv, ",%.3f,%.3f,%.0f\n", c ? over : 0.0, r->first_extra_ms, r->bytes);
-            put_ms(md, c ? over : NAN, " | ");
-            put_ms(md, r->first_extra_ms, " | ");
+            put_change(md, c ? over : NAN, " | ");
+            put_change(md, r->first_extra_ms, " | ");
             fprintf(md, "%.1f MiB |\n", r->bytes / 1048576.0);
         }
     fclose(csv);
@@ -198,13 +206,15 @@ bool bench_ambient_run(const bench_options *o)
 {
     static ambient_row rows[SCENES][CHAPTERS];
     bool ok = true;
+    char extra[32];
     for (int s = 0; ok && s < SCENES; s++) {
         ok = run_scene(o, scene_names[s], rows[s]);
         for (int c = 0; ok && c < CHAPTERS; c++)
             fprintf(stderr, "bench: ambient %-15s %-21s frame %8.1f ms, lighting %8.1f ms, ssao %6.1f + %6.1f ms, "
-                            "first frame +%.0f ms, %.1f MiB\n",
+                            "first frame %s ms, %.1f MiB\n",
                     scene_names[s], chapter_names[c], rows[s][c].ms[0], rows[s][c].ms[5], rows[s][c].ms[3],
-                    rows[s][c].ms[4], rows[s][c].first_extra_ms, rows[s][c].bytes / 1048576.0);
+                    rows[s][c].ms[4], bench_format_change(rows[s][c].first_extra_ms, 0, extra, sizeof extra),
+                    rows[s][c].bytes / 1048576.0);
     }
     return ok && write_results(o, rows) && bench_ambient_error_run(o);
 }

@@ -65,7 +65,8 @@ void bench_gbuffer_print_help(FILE *f)
     fprintf(f, "  --gbuffer-sweep MODE   on: after the sweeps, every G-buffer layout (common/render/gbuffer.h) on\n"
                "                        the default scene, the city and the PBR teapots (the layouts that\n"
                "                        can hold them): bytes, time, normal, position and picture error\n"
-               "                        (DIR/bench_gbuffer.csv, a section of bench.md);\n"
+               "                        (DIR/bench_gbuffer.csv, a section of bench.md; only:\n"
+               "                        DIR/bench_gbuffer.md, and bench.md is left alone);\n"
                "                        off; only: nothing else (--full: on; otherwise off)\n");
 }
 

@@ -23,7 +23,8 @@
  *   bench_gbuffer_only()                   --gbuffer-sweep only: nothing else runs
  *   bench_gbuffer_run(st, br, m)           the sweep (after the main one: it draws its own reference)
  *   bench_gbuffer_write_csv(st)            OUT/bench_gbuffer.csv, one row per (scene, layout)
- *   bench_gbuffer_write_md(f, st)          the "## G-buffer layouts" section of bench.md
+ *   bench_gbuffer_write_md(f, st)          the "## G-buffer layouts" section of bench.md (with
+ *                                          --gbuffer-sweep only: of bench_gbuffer.md)
  *   bench_gbuffer_print_help(f)            the option's --help lines
  */
 #ifndef TOOLS_BENCH_GBUFFER_H

@@ -79,7 +79,9 @@ void bench_options_print_help(FILE *f)
         "  --seed N              light_generate seed (default 1)\n"
         "  --scene-dir DIR       where scene names are looked up (default: the data folder's\n"
         "                        assets/scenes)\n"
-        "  --out DIR             output folder (default out)\n"
+        "  --out DIR             output folder (default out). A part run alone (--gbuffer-sweep,\n"
+        "                        --storage or --ambient-sweep only) writes its own files there and never\n"
+        "                        bench.md, bench.csv or the plots, which stay the last sweep's\n"
         "  --backend egl|osmesa  headless GL (default egl)\n"
         "  --no-plots            skip gnuplot\n"
         "  --quiet               no progress lines (written while a frame takes more than 2 s)\n");

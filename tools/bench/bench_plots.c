@@ -151,8 +151,9 @@ static bool write_plot_script(const bench_state *st, const char *term)
     return bench_report_close_tmp(f, tmp, st->opt.out_dir, "bench_plots.gp");
 }
 
-bool bench_plots_make(const bench_state *st)
+bool bench_plots_make(const bench_state *st, bool *drawn)
 {
+    *drawn = false;
     /* pngcairo draws smoother lines; plain png (libgd) is the fallback. */
     FILE *probe = popen("gnuplot -e \"set terminal pngcairo\" 2>&1", "r");
     if (!probe) {
@@ -189,5 +190,6 @@ bool bench_plots_make(const bench_state *st)
             return false;
         }
     }
+    *drawn = plotted;
     return plotted;
 }

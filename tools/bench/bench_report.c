@@ -317,6 +317,19 @@ static void write_intro(FILE *f, const bench_state *st)
             bench_gbuffer_enabled() ? "; the other layouts: \"G-buffer layouts\" below" : "");
 }
 
+bool bench_report_write_part_md(const bench_state *st, const char *name, const char *title,
+                                void (*write_section)(FILE *f, const bench_state *st))
+{
+    char tmp[1024];
+    FILE *f = bench_report_open_tmp(st->opt.out_dir, name, tmp, sizeof tmp);
+    if (!f)
+        return false;
+    fprintf(f, "# %s: benchmark results\n\n- machine: %s, %d logical cores\n- GL: %s, %s\n", title, st->cpu,
+            st->cores, st->gl_renderer, st->gl_version);
+    write_section(f, st);
+    return bench_report_close_tmp(f, tmp, st->opt.out_dir, name);
+}
+
 static void write_times(FILE *f, const bench_state *st)
 {
     const bench_options *o = &st->opt;

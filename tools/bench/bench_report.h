@@ -5,6 +5,10 @@
  *   bench_report_write_csv(st)             OUT/bench.csv: one row per (case, renderer), NA where a
  *                                          value was not measured; the columns are stable
  *   bench_report_write_md(st)              OUT/bench.md
+ *   bench_report_write_part_md(st, name, title, write_section)
+ *                                          OUT/NAME: a part run alone (--gbuffer-sweep only,
+ *                                          --storage only) writes its section into a page of its own,
+ *                                          the machine on top, so it never replaces the sweep's bench.md
  *   bench_report_write_pbr(f, st)          the "## Metallic-roughness scenes" section of bench.md (the
  *                                          PBR rows; bench_report_pbr.c); nothing when there are none
  *   bench_report_time_cell(f, r)           one table cell: r's median ms, marked when extrapolated or
@@ -27,6 +31,8 @@
 
 bool bench_report_write_csv(const bench_state *st);
 bool bench_report_write_md(const bench_state *st);
+bool bench_report_write_part_md(const bench_state *st, const char *name, const char *title,
+                                void (*write_section)(FILE *f, const bench_state *st));
 void bench_report_write_pbr(FILE *f, const bench_state *st);
 void bench_report_time_cell(FILE *f, const bench_row *r);
 FILE *bench_report_open_tmp(const char *dir, const char *name, char *tmp, size_t size);

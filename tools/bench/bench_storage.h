@@ -35,8 +35,9 @@
  *                                          samples, pass) and one `total` row each; the timing-only
  *                                          rows after a scene's renderers, bytes and error NA, their
  *                                          note "timing only: ..."
- *   bench_storage_write_md(f, st)          the "## What to store per pixel" section of bench.md, its
- *                                          last part "### What the visibility pass's time is made of"
+ *   bench_storage_write_md(f, st)          the "## What to store per pixel" section of bench.md (with
+ *                                          --storage only: of bench_storage.md), its last part
+ *                                          "### What the visibility pass's time is made of"
  *   bench_storage_print_help(f)            the option's --help lines
  */
 #ifndef TOOLS_BENCH_STORAGE_H
