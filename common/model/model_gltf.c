@@ -172,6 +172,16 @@ static bool keys_unique(gltf *g, const cJSON *item)
 
 /* ---- fields ---------------------------------------------------------------------------------- */
 
+/* The index a JSON value holds: a whole number from 0 to count - 1, or -1. The range is checked on
+ * the double before it is converted (a conversion out of range is undefined). */
+static long long index_of(const cJSON *v, long long count)
+{
+    double d = v && cJSON_IsNumber(v) ? v->valuedouble : -1.0;
+    if (!(d >= 0.0 && d < (double)count) || d != (double)(long long)d)
+        return -1;
+    return (long long)d;
+}
+
 /* A whole number from 0 to hi; `fallback` when the key is absent (-1: it must be there). */
 static bool field_whole(gltf *g, const cJSON *obj, const char *key, long long fallback, long long hi,
                         long long *out, const char *what, long long index)
@@ -180,7 +190,7 @@ static bool field_whole(gltf *g, const cJSON *obj, const char *key, long long fa
     if (!v && fallback >= 0)
         return *out = fallback, true;
     double d = v && cJSON_IsNumber(v) ? v->valuedouble : -1.0;
-    if (!(d >= 0.0 && d <= (double)GLTF_WHOLE_MAX && d == (double)(long long)d && (long long)d <= hi))
+    if (!(d >= 0.0 && d <= (double)GLTF_WHOLE_MAX) || d != (double)(long long)d || (long long)d > hi)
         return model_fail(g->why, g->n, "%s %lld: '%s' %s a whole number from 0 to %lld", what, index, key,
                           v ? "is not" : "is missing; it must be", hi);
     *out = (long long)d;
@@ -511,8 +521,8 @@ static bool check_attributes(gltf *g, const cJSON *attributes, long long mesh, l
         return model_fail(g->why, g->n, "mesh %lld: a primitive without an 'attributes' object", mesh);
     cJSON_ArrayForEach(a, attributes)
     {
-        long long k = a->valuedouble;
-        if (!cJSON_IsNumber(a) || a->valuedouble != (double)k || k < 0 || k >= g->accessors.count)
+        long long k = index_of(a, g->accessors.count);
+        if (k < 0)
             return model_fail(g->why, g->n, "mesh %lld: attribute '%.40s' names no accessor", mesh, a->string);
         long long count;
         field_whole(g, g->accessors.at[k], "count", -1, GLTF_WHOLE_MAX, &count, "accessor", k);
@@ -602,8 +612,8 @@ static bool check_node(gltf *g, long long i, long long *parent)
         return model_fail(g->why, g->n, "node %lld: 'children' is not an array", i);
     cJSON_ArrayForEach(c, children)
     {
-        k = (long long)c->valuedouble;
-        if (!cJSON_IsNumber(c) || c->valuedouble != (double)k || k < 0 || k >= g->nodes.count)
+        k = index_of(c, g->nodes.count);
+        if (k < 0)
             return model_fail(g->why, g->n, "node %lld: a child that names no node", i);
         if (parent[k] >= 0 || k == i)
             return model_fail(g->why, g->n, "node %lld is a child twice, or its own (nodes form a tree)", k);
@@ -649,8 +659,8 @@ static bool index_array(gltf *g, const cJSON *obj, const char *key, const gltf_l
         return model_fail(g->why, g->n, "%s %lld: '%s' is not an array", what, i, key);
     cJSON_ArrayForEach(c, v)
     {
-        long long k = (long long)c->valuedouble;
-        if (!cJSON_IsNumber(c) || c->valuedouble != (double)k || k < 0 || k >= list->count)
+        long long k = index_of(c, list->count);
+        if (k < 0)
             return model_fail(g->why, g->n, "%s %lld: '%s' holds an index that names nothing", what, i, key);
         (*count)++;
     }
@@ -795,8 +805,7 @@ static bool check_document(gltf *g, const cJSON *root)
     if (g->buffers.count && !(g->data = calloc((size_t)g->buffers.count, sizeof *g->data)))
         return model_fail(g->why, g->n, "out of memory");
     const cJSON *scene = cJSON_GetObjectItemCaseSensitive(root, "scene");
-    long long k = scene && cJSON_IsNumber(scene) ? (long long)scene->valuedouble : -1;
-    if (scene && (k < 0 || (double)k != scene->valuedouble || k >= g->scenes.count))
+    if (scene && index_of(scene, g->scenes.count) < 0)
         return model_fail(g->why, g->n, "'scene' is not the index of one of its %lld scenes", g->scenes.count);
     bool ok = check_buffers(g) && check_views(g) && check_accessors(g) && check_meshes(g) && check_nodes(g) &&
               check_skins_scenes(g) && check_images(g) && check_lights(g) && check_animations(g);

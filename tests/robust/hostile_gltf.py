@@ -221,6 +221,8 @@ def cases(outside):
             "inverseBindMatrices"))), "has no inverseBindMatrices"),
         # structure: depth, counts, cycles
         ("nested_nodes", doc("a.gltf", nested_nodes(20000)), "nested more than 64 deep"),
+        ("index_1e38", doc("a.gltf", changed(triangle(), lambda g: g["scenes"][0].update(nodes=[1e38]))),
+         "holds an index that names nothing"),
         ("node_two_parents", doc("a.gltf", changed(triangle(), lambda g: g.update(
             nodes=[{"mesh": 0, "children": [2]}, {"children": [2]}, {}]))), "a child twice"),
         ("node_cycle", doc("a.gltf", changed(triangle(), lambda g: g.update(
