@@ -52,3 +52,7 @@ set_tests_properties(pages.commands_refused PROPERTIES LABELS golden SKIP_RETURN
 add_test(NAME lessons.screenshots_ignored
   COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/lessons/screenshots_ignored.py ${CMAKE_SOURCE_DIR})
 set_tests_properties(lessons.screenshots_ignored PROPERTIES LABELS unit SKIP_RETURN_CODE 77)
+# Every golden a page names (an exercise's target) exists.
+add_test(NAME lessons.page_goldens
+  COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/lessons/screenshots_ignored.py --goldens ${CMAKE_SOURCE_DIR})
+set_tests_properties(lessons.page_goldens PROPERTIES LABELS unit)
