@@ -26,6 +26,17 @@ foreach(target ${COURSE_FUZZ_TARGETS})
   set_tests_properties(fuzz.replay.${target} PROPERTIES LABELS unit)
 endforeach()
 
+# The model target writes each glTF input to a folder of its own under $TMPDIR: it must leave nothing
+# behind. The open() interposer (tests/robust/open_log.c) shows that it did write there.
+if(NOT COURSE_SANITIZE)
+  add_test(NAME fuzz.replay.model_cleans_up
+    COMMAND ${BASH} -c "tmp=$(mktemp -d) && mkdir $tmp/t && TMPDIR=$tmp/t OPEN_LOG=$tmp/opens LD_PRELOAD=$2 \"$0\" \"$1\" \
+>/dev/null 2>&1; rc=$?; used=$(grep -c \"^$tmp/t/fuzz_model_\" $tmp/opens); left=$(ls -A $tmp/t); rm -rf $tmp; \
+echo \"exit $rc, $used files written under TMPDIR, left there: '$left'\"; [ $rc -eq 0 ] && [ $used -gt 0 ] && [ -z \"$left\" ]"
+            $<TARGET_FILE:fuzz_model_replay> ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus_model $<TARGET_FILE:open_log>)
+  set_tests_properties(fuzz.replay.model_cleans_up PROPERTIES LABELS unit)
+endif()
+
 # Assimp is a shared library the sanitizers do not instrument: AddressSanitizer misses a write
 # past a block inside it (the PLY reader's, tests/fuzz/regressions/model/heap-ply-*, showed up only
 # as damage to ASan's own bookkeeping, minutes later). valgrind sees every byte: this replays the

@@ -42,7 +42,7 @@ static void check_mesh(const mesh_data *m)
 
 /* The model directive reads a file from disk (with the files it names beside it): the bytes go to
  * a file of a folder made once, and every mesh of what it accepts is built. */
-static char dir[64];
+static char dir[512];
 
 /* The folder goes when the run ends (each file in it is removed after its input). */
 static void remove_dir(void) { rmdir(dir); }
@@ -50,11 +50,13 @@ static void remove_dir(void) { rmdir(dir); }
 static void import_gltf(const char *name, const uint8_t *data, size_t size)
 {
     if (!dir[0]) {
-        if (!mkdtemp(strcpy(dir, "/tmp/fuzz_model_XXXXXX")))
+        const char *tmp = getenv("TMPDIR"); /* fuzz.replay.model_cleans_up points it at an empty folder */
+        if (snprintf(dir, sizeof dir, "%s/fuzz_model_XXXXXX", tmp && *tmp ? tmp : "/tmp") >= (int)sizeof dir ||
+            !mkdtemp(dir))
             abort();
         atexit(remove_dir);
     }
-    char path[128];
+    char path[sizeof dir + 16];
     snprintf(path, sizeof path, "%s/%s", dir, name);
     FILE *f = fopen(path, "wb");
     if (!f || fwrite(data, 1, size, f) != size || fclose(f) != 0)
