@@ -205,6 +205,8 @@ def cases(outside):
         ("image_symlink", linked("a.gltf", "link.png", os.path.join(outside, "secret.png"),
                                  with_image("link.png")), "lies outside the model's folder"),
         ("buffer_fifo", fifo("a.gltf", triangle("pipe.bin")), "not a regular file"),
+        ("buffer_short_file", with_files("a.gltf", triangle("short.bin"), {"short.bin": TRIANGLE[:20]}),
+         "buffer 0 says 36 bytes, and its data holds 20"),
         # accessors and views past their bytes
         ("accessor_overrun", doc("a.gltf", changed(triangle(), lambda g: g["accessors"][0].update(count=300000))),
          "end at byte"),
