@@ -112,7 +112,7 @@ static bool holds_nul(const char *p, size_t size)
 }
 
 /* The byte where `p` stops being UTF-8 (glTF's JSON must be), or `size`: no overlong forms, no
- * surrogates, nothing past U+10FFFF. Assimp 5.2 crashed on a mimeType holding a stray 0xd5. */
+ * surrogates, nothing past U+10FFFF. */
 static size_t utf8_end(const unsigned char *p, size_t size)
 {
     for (size_t i = 0; i < size;) {
@@ -708,6 +708,14 @@ static bool check_images(gltf *g)
         if (uri && !is_data_uri(uri->valuestring) &&
             !uri_file(g, uri->valuestring, "image", i, path, sizeof path, &size))
             return false;
+        /* Assimp 5.2 reads the part after the '/' of an embedded image's type without looking for
+         * the '/' (a null pointer plus one, found by fuzzing); glTF allows these two. */
+        const cJSON *mime = cJSON_GetObjectItemCaseSensitive(im, "mimeType");
+        char quoted[MODEL_QUOTE_MAX + 8];
+        model_quote(cJSON_IsString(mime) ? mime->valuestring : "", quoted, sizeof quoted);
+        if (mime && strcmp(quoted, "image/png") != 0 && strcmp(quoted, "image/jpeg") != 0)
+            return model_fail(g->why, g->n, "image %lld: mimeType '%s' (glTF 2.0's images are image/png or "
+                              "image/jpeg)", i, quoted);
     }
     for (long long i = 0, k; i < g->textures.count; i++)
         if (!field_index(g, g->textures.at[i], "source", false, &g->images, &k, "texture", i) ||

@@ -239,6 +239,8 @@ def cases(outside):
         ("json_nul", doc("a.gltf", json.dumps(triangle("a\\u0000../x.bin")).replace("\\\\u", "\\u")), "NUL"),
         ("json_not_utf8", raw("a.gltf", json.dumps(with_image("a.png")).replace('"a.png"', '"a.png", "mimeType": "image/png"')
                                 .encode().replace(b"image/png", b"image\xd5png")), "its JSON is not UTF-8"),
+        ("image_mime_no_slash", doc("a.gltf", changed(with_image("a.png"), lambda g: g["images"][0].update(
+            uri=None, bufferView=0, mimeType="imagexpng") or g["images"][0].pop("uri"))), "mimeType 'imagexpng'"),
         ("json_broken", doc("a.gltf", json.dumps(triangle())[:-20]), "its JSON cannot be read"),
         ("gltf_1", doc("a.gltf", changed(triangle(), lambda g: g["asset"].update(version="1.0"))),
          "not a glTF 2.0 file"),
