@@ -5,14 +5,15 @@
 #
 #   (default)  the course's sweep: the scenes and light counts where the renderers' order changes,
 #              every renderer, the cut-off at three points; about 5 minutes in all on 2 cores
-#   --full     the pages' sweep (what scripts/update-docs.sh measures): about 15 minutes more
+#   --full     the pages' sweep (what scripts/update-docs.sh measures): about 20 minutes in all (23 in the
+#              dated run of 2026-12-02 18:29, as README says)
 #   --quick    the test-sized sweep: under a minute
 # Headless unless a display is available. Every option is passed to build/bin/bench (its --help).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 case " $* " in
-  *" --full "*) sweep="the pages' full sweep: about 15 minutes" ;;
+  *" --full "*) sweep="the pages' full sweep: about 20 minutes" ;;
   *" --quick "*) sweep="the quick sweep: under a minute" ;;
   *) sweep="the course's sweep: 3 to 5 minutes" ;;
 esac
