@@ -13,6 +13,15 @@
 # rounds a handful of pixels the other way.
 
 set(COURSE_GOLDEN_SIZE 320x240)
+
+# Every golden and agreement test is recorded here (its run_golden.sh / run_agreement.sh arguments),
+# and tests/softpipe/softpipe.cmake registers it a second time as softpipe.TEST, on Mesa's softpipe,
+# once every module has added its tests (so that it can copy their properties).
+function(course_softpipe_record test)
+  set_property(GLOBAL APPEND PROPERTY COURSE_SOFTPIPE_TESTS ${test})
+  set_property(GLOBAL PROPERTY COURSE_SOFTPIPE_ARGS_${test} ${ARGN})
+endfunction()
+
 set(COURSE_TEST_OUT ${CMAKE_BINARY_DIR}/test-out)
 # The default scene by name: chapters 09 and 12 open on their lesson's scene (spots, glass) without
 # --scene, and every test says which scene it draws (a test's own --scene comes later and wins).
@@ -26,6 +35,8 @@ function(course_golden_test name binary tolerance fraction)
             -- $<TARGET_FILE:${binary}> ${COURSE_RENDER_ARGS} ${ARGN}
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(golden.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  course_softpipe_record(golden.${name} golden ${name} ${CMAKE_SOURCE_DIR}/tests/golden/${name}.png
+    ${tolerance} ${fraction} -- $<TARGET_FILE:${binary}> ${COURSE_RENDER_ARGS} ${ARGN})
   # One list entry per case: fields joined by '|', arguments by '@' (';' would split the entry).
   string(REPLACE ";" "@" args "${COURSE_RENDER_ARGS};${ARGN}")
   set_property(GLOBAL APPEND PROPERTY COURSE_GOLDEN_CASES "${name}|$<TARGET_FILE:${binary}>|${args}")
@@ -53,6 +64,9 @@ function(course_agreement_test name tolerance fraction)
             -- $<TARGET_FILE:${bin_b}> ${COURSE_RENDER_ARGS} ${cmd_b}
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(agree.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  course_softpipe_record(agree.${name} agreement ${name} ${tolerance} ${fraction}
+    -- $<TARGET_FILE:${bin_a}> ${COURSE_RENDER_ARGS} ${cmd_a}
+    -- $<TARGET_FILE:${bin_b}> ${COURSE_RENDER_ARGS} ${cmd_b})
 endfunction()
 
 function(course_forward_agreement_test name tolerance fraction binary)
