@@ -41,7 +41,8 @@ if [ "$samples" -gt "$max" ]; then
   exit 2
 fi
 if [ "$path" = compute ]; then
-  echo "--path compute needs compute shaders (OpenGL 4.3), which this context does not have: use --path cpu" >&2
+  echo "--path compute needs compute shaders (OpenGL 4.3), which this context does not have:" \
+    "use --path cpu" >&2
   exit 1
 fi
 [ -n "${FAKE_EXIT:-}" ] && exit "$FAKE_EXIT"
@@ -84,15 +85,18 @@ FAKE_DIFF=fail expect "a difference on softpipe fails" 1 "max=108 -> FAIL" yes -
 FAKE_EXIT=3 expect "a chapter that fails, fails" 1 "exited with 3" no -- "${golden[@]}"
 FAKE_RENDERER=llvmpipe expect "llvmpipe is skipped" 77 "gave renderer 'llvmpipe'" no -- "${golden[@]}"
 FAKE_RENDERER=crash expect "no context is skipped" 77 "gave renderer 'none'" no -- "${golden[@]}"
-FAKE_OSMESA=llvmpipe expect "one side elsewhere is skipped" 77 "(backend osmesa), not softpipe" no -- "${agree[@]}"
+FAKE_OSMESA=llvmpipe expect "one side elsewhere is skipped" 77 "(backend osmesa), not softpipe" no \
+  -- "${agree[@]}"
 expect "both sides on softpipe" 0 "backend=osmesa renderer=softpipe" yes -- "${agree[@]}"
 expect "more samples than the context's is skipped" 77 "GL_MAX_SAMPLES is 1, fewer samples" no \
   -- "${golden[@]}" --samples 4
 FAKE_SAMPLES=4 expect "samples the context has run" 0 "renderer=softpipe" yes -- "${golden[@]}" --samples 4
-FAKE_DEFAULT_SAMPLES=4 expect "a chapter's default samples count" 77 "GL_MAX_SAMPLES is 1" no -- "${golden[@]}"
+FAKE_DEFAULT_SAMPLES=4 expect "a chapter's default samples count" 77 "GL_MAX_SAMPLES is 1" no \
+  -- "${golden[@]}"
 FAKE_DEFAULT_SAMPLES=4 expect "--samples 1 on that chapter runs" 0 "renderer=softpipe" yes \
   -- "${golden[@]}" --samples 1
-FAKE_SAMPLES=2 expect "2 samples of 4 is skipped too" 77 "GL_MAX_SAMPLES is 2" no -- "${golden[@]}" --samples 4
+FAKE_SAMPLES=2 expect "2 samples of 4 is skipped too" 77 "GL_MAX_SAMPLES is 2" no \
+  -- "${golden[@]}" --samples 4
 expect "compute refused is skipped" 77 "has no compute shaders" no -- "${agree[@]}" --path compute
 FAKE_COMPUTE=yes expect "a compute refusal where --gl-info has compute fails" 1 "exited with 1" no \
   -- "${agree[@]}" --path compute

@@ -45,7 +45,8 @@ for ((i = 0; i < n; i++)); do
   case $renderer in
     softpipe*) echo "softpipe: ${cmd[0]##*/} backend=$got renderer=$renderer version=$version" ;;
     *)
-      echo "skip: GALLIUM_DRIVER=softpipe gave renderer '${renderer:-none}' (backend ${got:-none}), not softpipe"
+      echo "skip: GALLIUM_DRIVER=softpipe gave renderer '${renderer:-none}'" \
+        "(backend ${got:-none}), not softpipe"
       exit 77
       ;;
   esac
@@ -57,7 +58,8 @@ if [ -n "${COURSE_SOFTPIPE_UNCHECKED:-}" ]; then
   exit 77
 fi
 [ -n "${COURSE_SOFTPIPE_KNOWN:-}" ] &&
-  echo "known difference on softpipe (this test passes only while the pictures differ): $COURSE_SOFTPIPE_KNOWN"
+  echo "known difference on softpipe (this test passes only while the pictures differ):" \
+    "$COURSE_SOFTPIPE_KNOWN"
 
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
@@ -66,7 +68,8 @@ rc=${PIPESTATUS[0]}
 [ "$rc" -eq 0 ] && exit 0
 if grep -q 'needs compute shaders (OpenGL 4.3), which this context does not have' "$log" &&
   ! grep -q '^gl: compute=yes' <<<"$first_info"; then
-  echo "skip: softpipe's context ($(sed -n 's/^gl: version=\([0-9.]*\).*/GL \1/p' <<<"$first_info")) has no compute shaders, which this test asks for"
+  gl=$(sed -n 's/^gl: version=\([0-9.]*\).*/GL \1/p' <<<"$first_info")
+  echo "skip: softpipe's context ($gl) has no compute shaders, which this test asks for"
   exit 77
 fi
 max=$(sed -n 's/^gl: .* max_samples=\([0-9]*\).*/\1/p' <<<"$first_info")

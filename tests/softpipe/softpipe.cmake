@@ -7,7 +7,7 @@
 # and skips a test whose chapter refuses what the context lacks (compute shaders, 4 samples).
 #
 #   ctest -C softpipe -L softpipe    the whole set (CONFIGURATIONS softpipe keeps it out of a plain
-#                                    ctest: about 80 minutes on 2 cores, docs/testing.md)
+#                                    ctest: 54 to 82 minutes on 2 cores, docs/testing.md)
 #   ctest -L softpipe-ci             the quick subset, which a plain ctest also runs
 #
 # A softpipe test keeps its llvmpipe bound (the first of "LLVMPIPE,OTHER") unless a bound below says
@@ -35,7 +35,8 @@ function(course_softpipe_known_difference test reason)
 endfunction()
 
 # course_softpipe_unchecked(TEST REASON): what TEST claims cannot be seen on softpipe (both sides
-# draw the same wrong picture, so it would pass for nothing): softpipe.TEST is skipped, with REASON.
+# draw the same wrong picture, or the picture is made of llvmpipe's rounding, so it would pass for
+# nothing or for anything): softpipe.TEST is skipped, with REASON.
 function(course_softpipe_unchecked test reason)
   set_property(GLOBAL PROPERTY COURSE_SOFTPIPE_UNCHECKED_${test} "${reason}")
   set_property(GLOBAL APPEND PROPERTY COURSE_SOFTPIPE_NAMED ${test})
@@ -95,9 +96,15 @@ course_softpipe_bound(golden.14_shadows_spots 1 0.0025)        # 187, max 147
 course_softpipe_bound(golden.14_shadows_pcf3 1 0.032)          # 2,387, max 94
 course_softpipe_bound(golden.14_shadows_contact 1 0.0057)      # 437, max 137
 course_softpipe_bound(golden.14_shadows_visibility 1 0.00073)  # 56, max 233
-course_softpipe_bound(golden.14_shadows_importance 1 0.016)    # 1,156, max 42 (the lit teapots under the discs)
+course_softpipe_bound(golden.14_shadows_importance 1 0.016)    # 1,156, max 42 (the lit teapots under discs)
+course_softpipe_bound(golden.14_shadows_grazing 1 0.00054)     # 41, max 43
 course_softpipe_bound(golden.19_image_based_light_teapots_shadows 1 0.018) # 1,345, max 43
 course_softpipe_bound(agree.14_vs_forward_d16 1 0.0059)        # 446, max 48: 16-bit depth, less room still
+# Without the normal offset and the slope bias the grazing floor is all acne, and acne is the
+# pattern of those last bits themselves: 62 % of pixels differ (47,706 over 1/255, up to 208), so a
+# bound would hold anything; what the golden shows (acne there) is llvmpipe's rounding to the pixel.
+course_softpipe_unchecked(golden.14_shadows_grazing_acne
+  "the acne's pattern is each driver's own rounding (62 % of pixels differ): nothing to compare")
 # The atlas view shows one texel a pixel, texelFetch at the interpolated tile coordinate truncated
 # (shadow_debug.frag): where that coordinate lands on a texel's edge the drivers pick neighbours,
 # and at a depth edge those differ: 4,739 pixels, in streaks along the edges, up to 196/255.
@@ -155,7 +162,7 @@ foreach(test agree.16_samples1 agree.16_vis_pass_full agree.16_shadows_differ ag
     "softpipe draws no visibility pass (gl_PrimitiveID, tests/softpipe/softpipe.cmake): nothing to compare")
 endforeach()
 
-# The quick subset (label softpipe-ci, in every plain ctest run; about 30 s at -j2, docs/testing.md):
+# The quick subset (label softpipe-ci, in every plain ctest run; 15 to 33 s at -j2, docs/testing.md):
 # one golden per chapter family, each on its default scene, the per-driver bounds of lines, shadows
 # and textures, a known difference, and agreements of the course's main claims (deferred is
 # forward, OSMesa is EGL, overwriting is wrong).
@@ -168,8 +175,8 @@ set(COURSE_SOFTPIPE_CI
   agree.00_osmesa_vs_egl agree.03_vs_forward agree.04_overwrite_differs agree.06_vs_forward
   agree.10_vs_forward_cpu agree.11_deferred_vs_forward agree.14_vs_forward_spot)
 
-# Registers softpipe.TEST for every recorded test; deferred to the end of tests/CMakeLists.txt so
-# that every module has added its tests and their properties (a "differs" test's PASS_REGULAR_EXPRESSION).
+# Registers softpipe.TEST for every recorded test; deferred to the end of tests/CMakeLists.txt so that
+# every module has added its tests and their properties (a "differs" test's PASS_REGULAR_EXPRESSION).
 function(course_softpipe_register_all)
   get_property(tests GLOBAL PROPERTY COURSE_SOFTPIPE_TESTS)
   foreach(test ${tests})
@@ -223,7 +230,8 @@ function(course_softpipe_register_all)
       get_test_property(${test} ${property} value)
       if(value)
         if(known)
-          message(SEND_ERROR "tests/softpipe/softpipe.cmake: ${test} has ${property}: a known difference cannot invert it")
+          message(SEND_ERROR "tests/softpipe/softpipe.cmake: ${test} has ${property}: "
+                             "a known difference cannot invert it")
         endif()
         set_tests_properties(softpipe.${test} PROPERTIES ${property} "${value}")
       endif()
