@@ -34,6 +34,7 @@ typedef struct gltf {
     gltf_list buffers, views, accessors, meshes, nodes, images, textures, skins, lights, scenes,
         animations, materials, samplers, cameras;
     unsigned char **data;            /* per buffer, decoded when a sparse accessor's indices are read */
+    char **files;                    /* per buffer, the file its URI names, resolved by check_buffers */
     long long named_bytes;           /* of the files it names, together */
     long long vertices, faces, memory;
     char *why;
@@ -314,6 +315,8 @@ static bool check_buffers(gltf *g)
             have = data_uri_bytes(uri->valuestring);
         } else if (!uri_file(g, uri->valuestring, "buffer", i, path, sizeof path, &have)) {
             return false;
+        } else if (!(g->files[i] = strdup(path))) {
+            return model_fail(g->why, g->n, "out of memory");
         }
         if (have < length)
             return model_fail(g->why, g->n, "buffer %lld says %lld bytes, and its data holds %lld", i, length,
@@ -407,15 +410,12 @@ static const unsigned char *buffer_data(gltf *g, long long i)
         }
         return out;
     }
-    char path[MODEL_PATH_MAX];
-    long long size;
-    FILE *f = NULL;
-    const char *refused;
-    if (!uri_file(g, s, "buffer", i, path, sizeof path, &size) || !(f = data_dir_open_input(path, &refused)) ||
-        fread(out, 1, (size_t)length, f) != (size_t)length) {
+    const char *refused = "cannot be read";
+    FILE *f = data_dir_open_input(g->files[i], &refused); /* the file check_buffers resolved and counted */
+    if (!f || fread(out, 1, (size_t)length, f) != (size_t)length) {
         if (f)
-            fclose(f), model_fail(g->why, g->n, "buffer %lld: its file cannot be read", i);
-        return NULL;
+            fclose(f);
+        return model_fail(g->why, g->n, "buffer %lld: its file %s", i, f ? "cannot be read" : refused), NULL;
     }
     fclose(f);
     return out;
@@ -810,7 +810,8 @@ static bool check_document(gltf *g, const cJSON *root)
             return false;
     if (!list_of(g, punctual, "lights", MODEL_LIGHTS_MAX, &g->lights))
         return false;
-    if (g->buffers.count && !(g->data = calloc((size_t)g->buffers.count, sizeof *g->data)))
+    if (g->buffers.count && (!(g->data = calloc((size_t)g->buffers.count, sizeof *g->data)) ||
+                             !(g->files = calloc((size_t)g->buffers.count, sizeof *g->files))))
         return model_fail(g->why, g->n, "out of memory");
     const cJSON *scene = cJSON_GetObjectItemCaseSensitive(root, "scene");
     if (scene && index_of(scene, g->scenes.count) < 0)
@@ -832,9 +833,12 @@ static void gltf_free(gltf *g)
                           &g->cameras};
     for (size_t i = 0; i < sizeof lists / sizeof lists[0]; i++)
         free(lists[i]->at);
-    for (long long i = 0; g->data && i < g->buffers.count; i++)
-        free(g->data[i]);
+    for (long long i = 0; i < g->buffers.count; i++) {
+        free(g->data ? g->data[i] : NULL);
+        free(g->files ? g->files[i] : NULL);
+    }
     free(g->data);
+    free(g->files);
 }
 
 /* The checked document as Assimp will read it: the JSON written again, in the .glb's chunks when

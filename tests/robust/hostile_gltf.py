@@ -217,6 +217,8 @@ def cases(outside):
         ("buffer_short_data", doc("a.gltf", changed(triangle(), lambda g: g["buffers"][0].update(byteLength=1000))),
          "says 1000 bytes, and its data holds 36"),
         ("sparse_index", doc("a.gltf", sparse(1000)), "sparse index 0 is 1000"),
+        ("sparse_index_in_a_file", with_files("a.gltf", changed(sparse(1000), lambda g: g["buffers"][0].update(
+            uri="s.bin")), {"s.bin": TRIANGLE + struct.pack("<I3f", 1000, 1, 1, 1)}), "sparse index 0 is 1000"),
         ("skin_matrices_overrun", doc("a.gltf", skin(2, 2, 64)), "end at byte"),
         ("skin_too_few_matrices", doc("a.gltf", skin(3, 1, 64)), "inverseBindMatrices"),
         ("skin_no_matrices", doc("a.gltf", changed(skin(2, 2, 128), lambda g: g["skins"][0].pop(
