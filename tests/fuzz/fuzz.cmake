@@ -61,7 +61,7 @@ if(COURSE_FUZZ)
     ${CMAKE_SOURCE_DIR}/common/scene/scene_lights.c
     ${CMAKE_SOURCE_DIR}/common/scene/scene_model.c ${CMAKE_SOURCE_DIR}/common/scene/model_import.c
     ${CMAKE_SOURCE_DIR}/common/scene/model_image.c
-    ${CMAKE_SOURCE_DIR}/common/model/model_file.c ${CMAKE_SOURCE_DIR}/common/model/model_scan.c ${CMAKE_SOURCE_DIR}/common/model/model_gltf.c
+    ${CMAKE_SOURCE_DIR}/common/model/model_file.c ${CMAKE_SOURCE_DIR}/common/model/model_scan.c ${CMAKE_SOURCE_DIR}/common/model/model_gltf.c ${CMAKE_SOURCE_DIR}/common/model/model_gltf_parts.c
     ${CMAKE_SOURCE_DIR}/common/scene/mesh_data.c ${CMAKE_SOURCE_DIR}/common/scene/mesh_tangents.c
     ${CMAKE_SOURCE_DIR}/common/base/log.c ${CMAKE_SOURCE_DIR}/common/base/data_dir.c)
   set(COURSE_FUZZ_SOURCES_cli ${CMAKE_SOURCE_DIR}/common/platform/cli.c ${CMAKE_SOURCE_DIR}/common/platform/cli_help.c ${CMAKE_SOURCE_DIR}/common/platform/input_script.c
