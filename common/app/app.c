@@ -92,54 +92,6 @@ bool app_target_make(app *a)
     return fbo_create(&a->target, &desc, a->width, a->height);
 }
 
-/* "geometry 3.10, lighting 8.20" from frame times summed over n frames; compare mode's passes are
- * not the chapter's. */
-static void write_passes(const frame_times *sum, int n, FILE *out)
-{
-    for (int k = 0, shown = 0; k < sum->count; k++)
-        if (strcmp(sum->names[k], APP_COMPARE_PASS) != 0 && strcmp(sum->names[k], APP_COMPOSE_PASS) != 0)
-            fprintf(out, "%s%s %.2f", shown++ ? ", " : "", sum->names[k], sum->ms[k] / n);
-}
-
-/* " | view lit", or " | view lit (not albedo)" when the frame could not draw the view chosen. */
-static void write_view(const app *a, FILE *out)
-{
-    if (!a->cli->views)
-        return;
-    const char *chosen = a->cli->views[a->view], *drawn = a->view_drawn ? a->view_drawn : chosen;
-    fprintf(out, " | view %s", drawn);
-    if (strcmp(drawn, chosen) != 0)
-        fprintf(out, " (not %s)", chosen);
-}
-
-/* The title shows the renderer and the view drawn, the frame time the timer measured (never CPU
- * submission time alone), its passes and the clock, then forward's frame in compare mode (from frames
- * that drew it); --verbose logs it too. As long as it needs to be (open_memstream). */
-static void update_title(const app *a, const frame_times *sum, int n, bool paused)
-{
-    char *title = NULL;
-    size_t size = 0;
-    FILE *f = open_memstream(&title, &size);
-    if (!f)
-        return;
-    const app_frame_split split = app_frame_split_of(sum);
-    double ms = split.own_ms / n;
-    fprintf(f, "%s | %s", a->cli->program, a->cli->renderers ? a->cli->renderers[a->renderer] : "forward");
-    write_view(a, f);
-    fprintf(f, " | %d lights (%d culled) | %dx%d | %.2f ms (%.0f fps; ", a->scene.light_count, a->gs.culled_count,
-            a->width, a->height, ms, ms > 0 ? 1000.0 / ms : 0.0);
-    write_passes(sum, n, f);
-    fprintf(f, ") [%s]", frame_timer_clock(&a->timer));
-    if (split.forward_timed)
-        fprintf(f, " | compare: forward %.2f ms", split.forward_ms / n);
-    fprintf(f, " | cut-off %.4g%s%s", a->cutoff, a->cutoff == 0 ? " (exact)" : "", paused ? " | paused" : "");
-    if (fclose(f) == 0 && title) {
-        platform_set_title(title);
-        log_debug("window: %s", title);
-    }
-    free(title);
-}
-
 static void next_choice(const char *const *choices, int *index, const char *what)
 {
     if (!choices)
@@ -240,7 +192,7 @@ static void record_title(const app *a, loop *l, double now)
         l->title_n++;
     }
     if (now - l->title_clock > 0.5 && l->title_n > 0) {
-        update_title(a, &l->title_sum, l->title_n, l->paused);
+        app_text_title(a, &l->title_sum, l->title_n, l->paused);
         frame_times *avg = &l->window.times; /* the overlay's figures */
         *avg = l->title_sum;
         for (int k = 0; k < avg->count; k++)

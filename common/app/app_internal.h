@@ -73,10 +73,11 @@ const char *const *app_with_forward_plus(const char *const *list, const char **o
  *   app_window_display(w, a, paused)   the picture with the overlay: what the window shows
  *   app_window_after_frame(w, a, shown, paused, &rc)
  *                                      the script's after-frame events; false: stop (rc says why)
- *   app_window_overlay_text(w, a, paused)
- *                                      the overlay's lines, a string to free (as long as they are:
- *                                      no fixed buffer cuts them); NULL when out of memory (logged)
- *   app_window_key_list_text(a)        F1's list of the chapter's keys, the same way
+ *   app_text_overlay(w, a, paused)     (app_text.c) the overlay's lines, a string to free (as long
+ *                                      as they are: no fixed buffer cuts them); NULL when out of
+ *                                      memory (logged)
+ *   app_text_key_list(a)               F1's list of the chapter's keys, the same way
+ *   app_text_title(a, sum, n, paused)  the window's title from n frames' times (and --verbose's log)
  *   app_window_save(fbo, path)         colour attachment 0 as an image file */
 #define APP_COMPARE_PASS "compare forward" /* forward's whole frame in compare mode, as one pass */
 #define APP_COMPOSE_PASS "compare compose" /* both pictures into the one shown: neither side's time */
@@ -122,8 +123,9 @@ bool app_window_key(app_window *w, app *a, key_action action);
 bool app_window_compare(app_window *w, app *a, bool (*draw_forward)(app *a, GLuint target));
 const fbo *app_window_display(app_window *w, app *a, bool paused);
 bool app_window_after_frame(app_window *w, app *a, const fbo *shown, bool paused, int *rc);
-char *app_window_overlay_text(const app_window *w, const app *a, bool paused);
-char *app_window_key_list_text(const app *a);
+char *app_text_overlay(const app_window *w, const app *a, bool paused);
+char *app_text_key_list(const app *a);
+void app_text_title(const app *a, const frame_times *sum, int n, bool paused);
 bool app_window_save(const fbo *f, const char *path);
 
 #endif
