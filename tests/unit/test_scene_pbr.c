@@ -44,19 +44,11 @@ static int setup_dir(void **state)
 /* The parser's one message goes to stderr: send it to a file and read it back. */
 static bool parse(const char *text, scene *out, char *err, size_t size)
 {
-    fflush(stderr);
-    FILE *capture = tmpfile();
-    assert_non_null(capture);
-    int saved = dup(2);
-    dup2(fileno(capture), 2);
+    stderr_capture c;
+    stderr_capture_begin(&c);
+    assert_non_null(c.file);
     bool ok = scene_parse_string(text, "t.scene", tmp_dir, out);
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    rewind(capture);
-    size_t n = fread(err, 1, size - 1, capture);
-    err[n] = '\0';
-    fclose(capture);
+    stderr_capture_end(&c, err, size);
     return ok;
 }
 

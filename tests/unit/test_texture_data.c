@@ -51,19 +51,11 @@ static void parse_scene(const char *image, scene *s)
 /* texture_data_load with stderr in `err`; its result. */
 static bool load_captured(const scene *s, unsigned char *rgba, char *err, size_t size)
 {
-    fflush(stderr);
-    FILE *capture = tmpfile();
-    assert_non_null(capture);
-    int saved = dup(2);
-    dup2(fileno(capture), 2);
+    stderr_capture c;
+    stderr_capture_begin(&c);
+    assert_non_null(c.file);
     bool ok = texture_data_load(s, 0, SIDE, rgba);
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    rewind(capture);
-    size_t n = fread(err, 1, size - 1, capture);
-    err[n] = '\0';
-    fclose(capture);
+    stderr_capture_end(&c, err, size);
     return ok;
 }
 

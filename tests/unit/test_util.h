@@ -9,12 +9,16 @@
  *                                               cmocka group setup returns
  *   tmp_dir_remove(state)                       group teardown: removes tmp_dir and all inside it
  *   tmp_path(name)                              "tmp_dir/name", in a buffer the next call reuses
+ *   stderr_capture_begin(&c), stderr_capture_end(&c, out, size)
+ *                                               what the code between the two wrote to stderr, into
+ *                                               out[size] (c.file is NULL when no file could hold it)
  */
 #ifndef TESTS_UNIT_TEST_UTIL_H
 #define TESTS_UNIT_TEST_UTIL_H
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #define UNIT_TEST_MAIN(group_setup, group_teardown, ...)                                                 \
     int main(void)                                                                                       \
@@ -45,6 +49,34 @@ static inline const char *tmp_path(const char *name)
     static char path[128];
     snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
     return path;
+}
+
+typedef struct stderr_capture {
+    FILE *file;
+    int saved; /* stderr's own descriptor, restored by stderr_capture_end */
+} stderr_capture;
+
+static inline void stderr_capture_begin(stderr_capture *c)
+{
+    fflush(stderr);
+    c->file = tmpfile();
+    c->saved = dup(2);
+    if (c->file)
+        dup2(fileno(c->file), 2);
+}
+
+static inline void stderr_capture_end(stderr_capture *c, char *out, size_t size)
+{
+    fflush(stderr);
+    dup2(c->saved, 2);
+    close(c->saved);
+    out[0] = '\0';
+    if (!c->file)
+        return;
+    rewind(c->file);
+    size_t n = fread(out, 1, size - 1, c->file);
+    out[n] = '\0';
+    fclose(c->file);
 }
 
 #endif
