@@ -103,7 +103,7 @@ bool model_uri_decode(const char *uri, char *out, size_t n)
     return true;
 }
 
-bool model_path_inside(const char *model, const char *path, long long *size, char *why, size_t n)
+bool model_path_inside(const char *model, const char *path, char *resolved, long long *size, char *why, size_t n)
 {
     char folder[PATH_MAX], target[PATH_MAX], dir[PATH_MAX];
     const char *slash = strrchr(model, '/');
@@ -121,6 +121,8 @@ bool model_path_inside(const char *model, const char *path, long long *size, cha
     if (stat(target, &st) != 0 || !S_ISREG(st.st_mode))
         return model_fail(why, n, "not a regular file");
     *size = (long long)st.st_size;
+    if (resolved)
+        snprintf(resolved, MODEL_PATH_MAX, "%s", target);
     return true;
 }
 
@@ -241,7 +243,7 @@ static struct aiFile *io_open(struct aiFileIO *fio, const char *name, const char
         long long bytes;
         if (!io->siblings)
             return NULL;
-        if (!model_path_inside(io->name, name, &bytes, reason, sizeof reason)) {
+        if (!model_path_inside(io->name, name, NULL, &bytes, reason, sizeof reason)) {
             io->outside |= strstr(reason, "outside") != NULL;
             return NULL;
         }

@@ -25,9 +25,10 @@
  *                                      files it names, the counts and the memory its import would
  *                                      take; the checked document as Assimp is to read it (malloc'd,
  *                                      *out_size bytes), or NULL with *why. model_import calls it.
- *   model_path_inside(model, path, size, why, n)
+ *   model_path_inside(model, path, resolved, size, why, n)
  *                                      whether `path` is a regular file inside the model's folder once
- *                                      `..` and symbolic links are resolved (*size: its bytes)
+ *                                      `..` and symbolic links are resolved (*size: its bytes; that
+ *                                      resolved path in resolved[MODEL_PATH_MAX] unless NULL)
  *   model_uri_decode(uri, out, n)      a URI's `%` escapes decoded ("a%20b.png" -> "a b.png"); false
  *                                      on a broken escape, an escaped NUL, or no room in out[n]
  *   model_quote(text, out, n)          a message of Assimp's as one printable line, cut short
@@ -84,7 +85,8 @@ const struct aiScene *model_import(const char *name, const char *data, size_t si
 char *model_gltf_check(const char *name, const char *data, size_t size, bool siblings, const model_limits *lim,
                        size_t *out_size, char *why, size_t n);
 bool model_uri_decode(const char *uri, char *out, size_t n);
-bool model_path_inside(const char *model, const char *path, long long *size, char *why, size_t n);
+bool model_path_inside(const char *model, const char *path, char *resolved, long long *size, char *why,
+                       size_t n);
 void model_quote(const char *text, char *out, size_t n);
 char *model_read_file(const char *path, const model_limits *lim, size_t *size, char *why, size_t n);
 /* The pre-scan (model_scan.c) and the import (model_file.c) say what is wrong the same way:

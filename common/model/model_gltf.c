@@ -270,7 +270,7 @@ bool gltf_uri_file(gltf *g, const char *uri, const char *what, long long index, 
     int dir = cut ? (int)(cut - g->name) + 1 : 0;
     if (snprintf(path, pn, "%.*s%s", dir, g->name, rel) >= (int)pn)
         return model_fail(g->why, g->n, "%s %lld: '%s': its path is too long", what, index, quoted);
-    if (!model_path_inside(g->name, path, size, reason, sizeof reason))
+    if (!model_path_inside(g->name, path, NULL, size, reason, sizeof reason))
         return model_fail(g->why, g->n, "%s %lld: '%s': %s", what, index, quoted, reason);
     g->named_bytes += *size;
     if (*size > g->lim->bytes || g->named_bytes > g->lim->bytes)

@@ -1,12 +1,10 @@
 /* model_image.c - see model_image.h. */
-#define _XOPEN_SOURCE 700 /* realpath */
 #include "model_image.h"
 
 #include "data_dir.h"
 #include "model_file.h"
 
 #include <assimp/scene.h>
-#include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -62,11 +60,11 @@ bool model_image_check(const struct aiScene *sc, const char *model, const char *
         FILE *f = NULL;
         /* inside the model's folder once `..` and links are resolved, and a regular file, before it
          * is opened (a named pipe would block the open) */
-        char resolved[PATH_MAX];
-        if (!model_path_inside(model, out->path, &bytes, reason, sizeof reason))
+        char resolved[MODEL_PATH_MAX];
+        if (!model_path_inside(model, out->path, resolved, &bytes, reason, sizeof reason))
             return model_fail(why, n, "%s: %s", shown, reason);
         /* named by its resolved path, so that "a.png", "./a.png" and "x/../a.png" are one texture */
-        if (!realpath(out->path, resolved) || strlen(resolved) >= sizeof out->path)
+        if (strlen(resolved) >= sizeof out->path)
             return model_fail(why, n, "%s: its path is too long", shown);
         memcpy(out->path, resolved, strlen(resolved) + 1);
         const char *refused;
