@@ -1,0 +1,16 @@
+# The pages' exercises that run the course's binaries with other options, performed as their text
+# says, each target checked both as the page states it and as the run prints or draws it
+# (tests/lessons/run_exercise.sh; exercises 14.2, 18.2, 18.4 and 19.2 have their own scripts, beside
+# their chapters' tests).
+function(course_page_exercises)
+  foreach(exercise ${ARGN})
+    string(REPLACE "." "_exercise_" name ${exercise})
+    add_test(NAME pages.${name}
+      COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/lessons/run_exercise.sh $<TARGET_FILE_DIR:00_forward>
+              ${CMAKE_SOURCE_DIR} ${COURSE_TEST_OUT}/${name} ${exercise})
+    set_tests_properties(pages.${name} PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
+  endforeach()
+endfunction()
+if(TARGET 00_forward AND TARGET imgdiff)
+  course_page_exercises(00.2 00.3)
+endif()
