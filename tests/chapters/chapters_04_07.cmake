@@ -18,6 +18,9 @@ function(chapters_04_07_tests)
   if(TARGET 04_light_volumes AND TARGET 00_forward)
     # Unscaled volume mesh: its faces cut inside the light's sphere (tests/unit/test_volume_mesh.c).
     course_golden_test(04_light_volumes_unscaled 04_light_volumes 1 0.0001 --scale none)
+    # Exercise 1's pictures: smaller volumes leave more seams; at 8 the last light drawn covers the others.
+    course_golden_test(04_light_volumes_radius2 04_light_volumes 1 0.0001 --radius 2)
+    course_golden_test(04_light_volumes_radius8 04_light_volumes 1 0.0001 --radius 8)
     chapters_04_07_expect_bug(04_unscaled_loses_light 04_light_volumes VS 04_light_volumes --scale none)
     # Without blending the last light wins: not the forward picture.
     chapters_04_07_expect_bug(04_overwrite_differs 04_light_volumes VS 00_forward)

@@ -57,6 +57,21 @@ case $exercise in
     run city 00_forward "${lists[@]}" --scene "$A/city.scene" --screenshot "$out/city.png"
     printed city "light lists: 14789 (object, light) pairs for 2491 objects and 256 lights: 5.9 lights per object"
     ;;
+02.4) # chapter 07 on the city with the 24-bit depth and with the default, against chapter 00
+    said "63 pixels beyond 1/255 with the default (within the 0.01 % bound), 70 with \`compact-d24s8\` (over it), and 78 between"
+    city=(--headless --size 800x800 --frames 1 --scene "$A/city.scene")
+    run forward 00_forward "${city[@]}" --screenshot "$out/forward.png"
+    run default 07_face_culling "${city[@]}" --screenshot "$out/default.png"
+    run d24s8 07_face_culling "${city[@]}" --gbuffer compact-d24s8 --screenshot "$out/d24s8.png"
+    equal "the default against chapter 00, pixels beyond 1/255" "$(over "$out/forward.png" "$out/default.png")" 63
+    equal "compact-d24s8 against chapter 00" "$(over "$out/forward.png" "$out/d24s8.png")" 70
+    equal "the two layouts" "$(over "$out/default.png" "$out/d24s8.png")" 78 ;;
+04.1) # the lighting fragments at radius 2, 3 and 8 (the pictures: golden.04_light_volumes_radius2, _radius8)
+    said "34,518 at radius 2, 76,988 at the default 3, 326,385 at 8"
+    for r in 2:34518 3:76988 8:326385; do
+        run "radius_${r%:*}" 04_light_volumes "${bench[@]}" --size 320x240 --radius "${r%:*}"
+        printed "radius_${r%:*}" "shaded_pixels=${r#*:} "
+    done ;;
 *)
     echo "FAIL: no exercise $exercise here"; exit 1 ;;
 esac
