@@ -72,6 +72,28 @@ case $exercise in
         run "radius_${r%:*}" 04_light_volumes "${bench[@]}" --size 320x240 --radius "${r%:*}"
         printed "radius_${r%:*}" "shaded_pixels=${r#*:} "
     done ;;
+05.1) # the violet light drawn first: the page's own command makes the copy
+    said "40,630 pixels (52.9 %) differ beyond 1/255, by up to 176/255"
+    command=$(grep -o "(grep 'color 0.8 0.2 1.0'[^\`]*" "$page" | head -n 1)
+    [ -n "$command" ] || { echo "FAIL: exercise 1 no longer gives its copy's command"; exit 1; }
+    (cd "$src" && eval "${command/violet_first.scene/$out/violet_first.scene}") || { echo "FAIL: $command"; exit 1; }
+    [ "$(grep -n 'color 0.8 0.2 1.0' "$out/violet_first.scene" | cut -d: -f1)" = 1 ] || { echo "FAIL: the violet light is not first"; exit 1; }
+    run violet 05_attenuation_radius --headless --size 320x240 --frames 1 --scene "$out/violet_first.scene" \
+        --screenshot "$out/violet.png"
+    equal "pixels beyond 1/255" "$(over "$src/tests/golden/05_attenuation_radius.png" "$out/violet.png")" 40630
+    grep -q "max=176 " "$out/imgdiff.log" && echo "ok   by up to 176/255" || { echo "FAIL: not by up to 176/255"; fail=1; } ;;
+05.3) # light 4's radius either side of the camera's distance
+    said "camera (distance 6.31)"
+    said "between 0.0482 (\`--cutoff 0.0482 --verbose\` logs light 4's radius as 6.31327) and 0.0484 (6.29874"
+    for c in 0.0482:6.31327 0.0484:6.29874; do
+        run "cutoff_${c%:*}" 05_attenuation_radius --headless --size 64x48 --frames 1 --verbose --cutoff "${c%:*}" \
+            --screenshot "$out/cutoff_${c%:*}.png"
+        printed "cutoff_${c%:*}" "light 4: kc 1 kl 0.35 kq 0.44 intensity 1 -> radius ${c#*:}"
+    done
+    # the camera's distance to light 4, from the scene
+    d=$(awk '$1 == "camera" { ex = $3; ey = $4; ez = $5 } $1 == "light" { if (n++ == 4) { lx = $3; ly = $4; lz = $5 } }
+        END { printf "%.2f", sqrt((ex - lx) ^ 2 + (ey - ly) ^ 2 + (ez - lz) ^ 2) }' "$A/default.scene")
+    equal "the camera's distance to light 4" "$d" 6.31 ;;
 *)
     echo "FAIL: no exercise $exercise here"; exit 1 ;;
 esac
