@@ -22,6 +22,8 @@ function(chapter_11_tests)
   # The pictures the page shows (the default scene's lit picture is golden.11_clustered).
   course_golden_test(11_clustered_clusters ${C} 1 0.0001 --view clusters --lights 256)
   course_golden_test(11_clustered_overdraw ${C} 1 0.0001 --view overdraw --lights 256)
+  # Exercise 1's picture: 24 slices, each far slice deep enough to hold many lights.
+  course_golden_test(11_clustered_clusters_slices24 ${C} 1 0.0001 --view clusters --lights 256 --slices 24)
 
   # Both renderers against chapter 00: the default scene, the city at full size, the spots, 1024
   # generated lights; the hard cases (camera inside a light, a light across the near plane, lights

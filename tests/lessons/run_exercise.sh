@@ -94,6 +94,22 @@ case $exercise in
     d=$(awk '$1 == "camera" { ex = $3; ey = $4; ez = $5 } $1 == "light" { if (n++ == 4) { lx = $3; ly = $4; lz = $5 } }
         END { printf "%.2f", sqrt((ex - lx) ^ 2 + (ey - ly) ^ 2 + (ez - lz) ^ 2) }' "$A/default.scene")
     equal "the camera's distance to light 4" "$d" 6.31 ;;
+10.6) # the two paths on the city: the same evaluations, different passes
+    said "both print \`shaded_pixels=8450764\`"
+    for path in compute:tile_culling_ms cpu:tile_depth_bounds_ms; do
+        run "${path%:*}" 10_tiled_deferred "${bench[@]}" --size 800x800 --scene "$A/city.scene" --path "${path%:*}"
+        printed "${path%:*}" "shaded_pixels=8450764 "
+        printed "${path%:*}" " ${path#*:}="
+    done
+    printed cpu " light_culling_ms=" ;;
+11.1) # the light evaluations with the default slices and with 24
+    said "275,725 light evaluations with the default slices and 424,762 with 24"
+    for s in default:275725 24:424762; do
+        slices=()
+        [ "${s%:*}" = default ] || slices=(--slices "${s%:*}")
+        run "slices_${s%:*}" 11_clustered "${bench[@]}" --size 320x240 --lights 256 "${slices[@]}"
+        printed "slices_${s%:*}" "shaded_pixels=${s#*:} "
+    done ;;
 *)
     echo "FAIL: no exercise $exercise here"; exit 1 ;;
 esac
