@@ -110,6 +110,34 @@ case $exercise in
         run "slices_${s%:*}" 11_clustered "${bench[@]}" --size 320x240 --lights 256 "${slices[@]}"
         printed "slices_${s%:*}" "shaded_pixels=${s#*:} "
     done ;;
+13.6) # the msaa: lines' bytes per pixel at 4 samples
+    said "both print \`bytes_per_pixel=48\` with the default \`compact\` layout"
+    said "with \`--gbuffer reference\` the deferred line says 64 and forward's stays 48"
+    run deferred 13_msaa "${bench[@]}" --size 160x120
+    printed deferred "msaa: renderer=deferred samples=4 bytes_per_sample=12 bytes_per_pixel=48 "
+    run forward 13_msaa "${bench[@]}" --size 160x120 --renderer forward
+    printed forward "msaa: renderer=forward samples=4 bytes_per_sample=12 bytes_per_pixel=48 "
+    run deferred_reference 13_msaa "${bench[@]}" --size 160x120 --gbuffer reference
+    printed deferred_reference "msaa: renderer=deferred samples=4 bytes_per_sample=16 bytes_per_pixel=64 "
+    run forward_reference 13_msaa "${bench[@]}" --size 160x120 --gbuffer reference --renderer forward
+    printed forward_reference "msaa: renderer=forward samples=4 bytes_per_sample=12 bytes_per_pixel=48 " ;;
+14.3) # the teapots in a small atlas, and with 8 shadows
+    said "\`dropped=70\` and \`tier_lights=0/0/0/10\`"
+    said "\`not_chosen=72\` and \`tier_lights=0/8/0/0\`"
+    teapots=("${bench[@]}" --size 160x120 --scene "$A/teapots.scene")
+    run atlas1024 14_shadows "${teapots[@]}" --shadow-atlas 1024
+    printed atlas1024 "shadowed=10 off=0 not_chosen=0 dropped=70 tier_lights=0/0/0/10 tiles=60 "
+    run shadows8 14_shadows "${teapots[@]}" --shadows 8
+    printed shadows8 "shadowed=8 off=0 not_chosen=72 dropped=0 tier_lights=0/8/0/0 " ;;
+14.4) # the shadow pass's triangles with culling and without
+    said "26001248 with culling, 140821440 without"
+    teapots=("${bench[@]}" --size 160x120 --scene "$A/teapots.scene")
+    run cull_on 14_shadows "${teapots[@]}"
+    printed cull_on "cull=on "
+    printed cull_on " triangles=26001248 "
+    run cull_off 14_shadows "${teapots[@]}" --shadow-cull off
+    printed cull_off "cull=off "
+    printed cull_off " triangles=140821440 " ;;
 *)
     echo "FAIL: no exercise $exercise here"; exit 1 ;;
 esac
