@@ -36,6 +36,12 @@ over() { # A.png B.png: imgdiff's count of pixels beyond 1/255
 equal() { # WHAT GOT WANT
     if [ "$2" = "$3" ]; then echo "ok   $1: $2"; else echo "FAIL $1: $2, the page says $3"; fail=1; fi
 }
+# A count of pixels beyond a tolerance moves with llvmpipe's last bits, which differ between CPUs:
+# within 1 % of the page's figure (and 1 pixel), as tests/chapters/run_pbr_exercise.sh allows.
+near() { # WHAT GOT WANT
+    if [ -n "$2" ] && awk "BEGIN { d = $2 - $3; e = $3 / 100; exit !(d * d <= (e > 1 ? e : 1) ^ 2) }"; then
+        echo "ok   $1: $2 (the page: $3)"; else echo "FAIL $1: $2, the page says $3"; fail=1; fi
+}
 bench=(--headless --frames 1 --warmup 0 --bench)
 
 case $exercise in
@@ -63,9 +69,9 @@ case $exercise in
     run forward 00_forward "${city[@]}" --screenshot "$out/forward.png"
     run default 07_face_culling "${city[@]}" --screenshot "$out/default.png"
     run d24s8 07_face_culling "${city[@]}" --gbuffer compact-d24s8 --screenshot "$out/d24s8.png"
-    equal "the default against chapter 00, pixels beyond 1/255" "$(over "$out/forward.png" "$out/default.png")" 63
-    equal "compact-d24s8 against chapter 00" "$(over "$out/forward.png" "$out/d24s8.png")" 70
-    equal "the two layouts" "$(over "$out/default.png" "$out/d24s8.png")" 78 ;;
+    near "the default against chapter 00, pixels beyond 1/255" "$(over "$out/forward.png" "$out/default.png")" 63
+    near "compact-d24s8 against chapter 00" "$(over "$out/forward.png" "$out/d24s8.png")" 70
+    near "the two layouts" "$(over "$out/default.png" "$out/d24s8.png")" 78 ;;
 04.1) # the lighting fragments at radius 2, 3 and 8 (the pictures: golden.04_light_volumes_radius2, _radius8)
     said "34,518 at radius 2, 76,988 at the default 3, 326,385 at 8"
     for r in 2:34518 3:76988 8:326385; do
@@ -80,7 +86,7 @@ case $exercise in
     [ "$(grep -n 'color 0.8 0.2 1.0' "$out/violet_first.scene" | cut -d: -f1)" = 1 ] || { echo "FAIL: the violet light is not first"; exit 1; }
     run violet 05_attenuation_radius --headless --size 320x240 --frames 1 --scene "$out/violet_first.scene" \
         --screenshot "$out/violet.png"
-    equal "pixels beyond 1/255" "$(over "$src/tests/golden/05_attenuation_radius.png" "$out/violet.png")" 40630
+    near "pixels beyond 1/255" "$(over "$src/tests/golden/05_attenuation_radius.png" "$out/violet.png")" 40630
     grep -q "max=176 " "$out/imgdiff.log" && echo "ok   by up to 176/255" || { echo "FAIL: not by up to 176/255"; fail=1; } ;;
 05.3) # light 4's radius either side of the camera's distance
     said "camera (distance 6.31)"
@@ -138,6 +144,24 @@ case $exercise in
     run cull_off 14_shadows "${teapots[@]}" --shadow-cull off
     printed cull_off "cull=off "
     printed cull_off " triangles=140821440 " ;;
+06.exactness) # not an exercise: the table "How exact is RGBA16F?", each --accum against chapter 00
+    said "| default | max 1/255, 0 % over 1 | max 1, 0 % | max 8, 10.9 % over 1 |"
+    said "| overlap (sum > 1) | **max 2**, 0.43 % over 1 | max 1, 0 % | max 8, 26.2 % over 1 |"
+    # max and pixels over 1/255 of 76,800 (10.9 % = 8,379; 0.43 % = 333; 26.2 % = 20,128)
+    declare -A table=([default_rgba16f]="1 0" [default_rgba32f]="1 0" [default_rgba8]="8 8379"
+                      [overlap_rgba16f]="2 333" [overlap_rgba32f]="1 0" [overlap_rgba8]="8 20128")
+    for scene in "$A/default.scene" "$src/tests/scenes/overlap.scene"; do
+        n=$(basename "$scene" .scene)
+        run "forward_$n" 00_forward --headless --size 320x240 --frames 1 --scene "$scene" --screenshot "$out/forward_$n.png"
+        for accum in rgba16f rgba32f rgba8; do
+            run "${n}_$accum" 06_additive_blending --headless --size 320x240 --frames 1 --scene "$scene" \
+                --accum "$accum" --screenshot "$out/${n}_$accum.png"
+            line=$("$bin/imgdiff" "$out/forward_$n.png" "$out/${n}_$accum.png" 2>&1 | grep "imgdiff:")
+            want=${table[${n}_$accum]}
+            equal "$n, $accum: max" "$(sed -n 's/.*max=\([0-9]*\) .*/\1/p' <<<"$line")" "${want% *}"
+            near "$n, $accum: pixels over 1/255" "$(sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p' <<<"$line")" "${want#* }"
+        done
+    done ;;
 *)
     echo "FAIL: no exercise $exercise here"; exit 1 ;;
 esac
