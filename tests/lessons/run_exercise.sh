@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # run_exercise.sh BIN_DIR SOURCE_DIR OUT_DIR EXERCISE - one page exercise performed as its text says
 # (EXERCISE: 00.2 is docs/00_*.md's exercise 2): the runs it names, and each target it states checked
-# twice, in the page's words (so the page cannot drift) and in what the run printed or drew.
+# twice, in the page's words (so the page cannot drift) and in what the run printed or drew; or one of
+# a page's measured tables (EXERCISE: 03.exactness, 06.exactness), measured again.
 # Exit 0 when every target is met, 1 when one is not, 77 without a GL context.
 set -u
 source "$(dirname "$0")/../lib/args.sh"
@@ -160,6 +161,28 @@ case $exercise in
             want=${table[${n}_$accum]}
             equal "$n, $accum: max" "$(sed -n 's/.*max=\([0-9]*\) .*/\1/p' <<<"$line")" "${want% *}"
             near "$n, $accum: pixels over 1/255" "$(sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p' <<<"$line")" "${want#* }"
+        done
+    done ;;
+03.exactness) # not an exercise: the table "How close to forward", both layouts against chapter 00
+    said "| 320×240 | 1 | 0.186 | 0 | 0.175 |"
+    said "| 200×300 | 1 | 0.221 | 0 | 0.201 |"
+    said "| 320×240, \`--time 3\` (orange light moved) | 1 | 0.185 | 0 | 0.174 |"
+    said "| 1024×768, \`--time 1.3\` | 1 | 0.185 | 0 | 0.174 |"
+    rows=("320x240:0.186:0.175" "200x300:0.221:0.201" "320x240 --time 3:0.185:0.174" "1024x768 --time 1.3:0.185:0.174")
+    for row in "${rows[@]}"; do
+        IFS=: read -r frame reference compact <<<"$row"
+        read -r size time <<<"${frame/ --time/}"
+        args=(--headless --frames 1 --size "$size" ${time:+--time "$time"})
+        run forward 00_forward "${args[@]}" --screenshot "$out/forward.png"
+        for layout in reference:$reference compact:$compact; do
+            run "${layout%:*}" 03_fullscreen_phong "${args[@]}" --gbuffer "${layout%:*}" --screenshot "$out/${layout%:*}.png"
+            line=$("$bin/imgdiff" "$out/forward.png" "$out/${layout%:*}.png" 2>&1 | grep "imgdiff:")
+            got=$(sed -n 's/.*max=\([0-9]*\) .*mean=\([0-9.]*\) .*over_tol=\([0-9]*\) .*/\1 \2 \3/p' <<<"$line")
+            # the page gives the mean to 3 digits, imgdiff to 4: within 0.001
+            if awk -v g="$got" -v m="${layout#*:}" 'BEGIN { split(g, f, " "); d = f[2] - m
+                exit !(f[1] == 1 && f[3] == 0 && d * d <= 1.0001e-6) }'; then
+                echo "ok   $frame, ${layout%:*}: max, mean, over 1/255: $got (the page: 1 ${layout#*:} 0)"
+            else echo "FAIL $frame, ${layout%:*}: max, mean, over 1/255: $got, the page says 1 ${layout#*:} 0"; fail=1; fi
         done
     done ;;
 *)
