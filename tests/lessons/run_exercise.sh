@@ -7,8 +7,9 @@
 set -u
 source "$(dirname "$0")/../lib/args.sh"
 args_expect 4 "$@"
-bin=$1 src=$2 out=$3 exercise=$4
+bin=$1 src=$(cd "$2" && pwd) out=$3 exercise=$4
 args_fresh_dir "$out"
+out=$(cd "$out" && pwd)
 page=$(ls "$src"/docs/"${exercise%%.*}"_*.md 2>/dev/null | head -n 1)
 [ -n "$page" ] || { echo "FAIL: no page docs/${exercise%%.*}_*.md"; exit 1; }
 A=$src/assets/scenes
@@ -185,6 +186,21 @@ case $exercise in
             else echo "FAIL $frame, ${layout%:*}: max, mean, over 1/255: $got, the page says 1 ${layout#*:} 0"; fail=1; fi
         done
     done ;;
+03.3) # the background shaded too: the same picture, every pixel counted (on a copy of the shaders)
+    said "\`shaded_pixels\` goes from 43,125 to 76,800, every pixel"
+    mkdir -p "$out/data"
+    data=${COURSE_DATA_DIR:-$src} # the shaders the chapter would read
+    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    frag=$out/data/shaders/deferred_fullscreen.frag
+    grep -q '^        discard;$' "$frag" || { echo "FAIL: deferred_fullscreen.frag has no discard to remove"; exit 1; }
+    sed -i 's/^        discard;$/        ;/' "$frag"
+    run kept 03_fullscreen_phong "${bench[@]}" --size 320x240
+    printed kept "shaded_pixels=43125 "
+    run removed 03_fullscreen_phong "${bench[@]}" --size 320x240 --data-dir "$out/data" --screenshot "$out/removed.png"
+    printed removed "shaded_pixels=76800 "
+    equal "pixels beyond 0/255 against the golden" \
+        "$("$bin/imgdiff" --tolerance 0 "$src/tests/golden/03_fullscreen_phong.png" "$out/removed.png" 2>&1 |
+           sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0 ;;
 *)
     echo "FAIL: no exercise $exercise here"; exit 1 ;;
 esac
