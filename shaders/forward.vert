@@ -22,10 +22,17 @@ flat out int v_object;
 flat out vec3 v_albedo;
 flat out float v_specular;
 flat out float v_shininess;
+// What a material's images and its emissive need (shaders/material_maps.glsl), in programs built for
+// a scene that has them (scene_features.glsl).
+#include "scene_features.glsl"
+#ifdef MATERIAL_MAPS
 out vec2 v_uv;
 out vec4 v_tangent;      // world space, w the handedness
-flat out vec4 v_maps;    // the material's map layers (shaders/material_maps.glsl)
+flat out vec4 v_maps;    // the material's map layers
+#endif
+#ifdef MATERIAL_EMISSIVE
 flat out vec4 v_emissive;
+#endif
 invariant gl_Position;
 
 void main()
@@ -46,9 +53,13 @@ void main()
     v_albedo = material.rgb;
     v_specular = material.a;
     v_shininess = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_SHININESS).r;
+#ifdef MATERIAL_MAPS
     v_uv = a_uv;
     v_tangent = vec4(mat3(model) * a_tangent.xyz, a_tangent.w);
     v_maps = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_MAPS);
+#endif
+#ifdef MATERIAL_EMISSIVE
     v_emissive = texelFetch(u_objects, t + SHADER_OBJECT_TEXEL_EMISSIVE);
+#endif
     gl_Position = u_view_proj * world;
 }

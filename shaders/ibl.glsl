@@ -1,5 +1,5 @@
-// ibl.glsl - chapter 19's ambient term (programs built with IMAGE_BASED_LIGHT; shading.glsl includes
-// it): the light of the probes picked this frame, blended per pixel, in place of the constant
+// ibl.glsl - chapter 19's ambient term (programs built with IMAGE_BASED_LIGHT; shading_features.glsl
+// includes it): the light of the probes picked this frame, blended per pixel, in place of the constant
 // ambient. docs/19_image_based_light.md has the formulas; chapters/ibl_probes.c sets the uniforms.
 //   diffuse:  albedo * E(n) / pi, E from each probe's 9 spherical-harmonics coefficients
 //   specular: prefiltered(r', roughness) * (F0 A + B), F0 = the material's specular, A and B the
@@ -111,7 +111,7 @@ vec3 ibl_ambient(vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shin
     vec3 c = (pbr ? albedo * (1.0 - specular) : albedo) * t.irradiance + t.prefiltered * (f0 * ab.x + ab.y);
     // with AMBIENT_OCCLUSION (chapter 19's --ssao) the occlusion scales the probes' light as it
     // scales the constant's (shade_ambient)
-    return min(t.coverage, 1.0) * ambient_occlusion() * c + max(1.0 - t.coverage, 0.0) * shade_ambient(albedo);
+    return min(t.coverage, 1.0) * ambient_visibility() * c + max(1.0 - t.coverage, 0.0) * shade_ambient(albedo);
 }
 
 #endif

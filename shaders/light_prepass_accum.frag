@@ -14,6 +14,8 @@
 // A Blinn-Phong pixel of the same scene writes its two sums into targets 0 and 1 and 0 into target 2.
 // SHADOWS (--shadows N, chapter 14's atlas): every term of a light times how much of it reaches p.
 #include "shading.glsl"
+#include "material_pbr.glsl"
+#include "light_prepass.glsl"
 #include "gbuffer_read.glsl"
 #include "heat.glsl"
 #include "clusters.glsl"
@@ -38,10 +40,7 @@ void shade_light_terms_pbr(int i, vec3 p, vec3 n, vec3 v, float ndv, float a2, i
     light_reach r;
     if (!shade_light_reach(L, light_fetch_cone(i), p, n, v, -1.0, r))
         return;
-    vec3 e = r.f * L.radiance * r.ndl;
-#ifdef SHADOWS
-    e *= shadow_visibility(i, L.position, p, n); // --shadows N: as shade_light_terms does
-#endif
+    vec3 e = light_visible(r.f * L.radiance * r.ndl, i, L.position, p, n); // as shade_light_terms does
     vec3 h = safe_normalize(r.l + v, n);
     float ndl = clamp(r.ndl, 0.0, 1.0);
     float D, V;

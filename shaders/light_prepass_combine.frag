@@ -9,6 +9,8 @@
 // base colour and metallic (after their maps): (1 - F0)^2 (1 - metallic) base C + F0 A + B, and adds
 // its emissive (chapter 18) once, beside the ambient (emissive exists only on such materials).
 #include "shading.glsl"
+#include "material_pbr.glsl"
+#include "light_prepass.glsl"
 #ifdef LIGHT_PREPASS_PBR
 #include "material_maps.glsl"
 #endif

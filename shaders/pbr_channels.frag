@@ -4,6 +4,7 @@
 // Colour is display-encoded like a lit picture; the other channels are numbers, shown as grey levels.
 // A Blinn-Phong surface has no metallic, roughness, occlusion or emissive channel: it shows dark blue there.
 #include "shading.glsl"
+#include "material_pbr.glsl"
 #include "gbuffer_read.glsl"
 
 uniform int u_channel; // PBR_CHANNEL_* (chapters/18_pbr_materials.c's views, in order)

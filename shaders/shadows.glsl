@@ -1,6 +1,6 @@
 // shadows.glsl - chapter 14's shadow lookup (docs/14_shadows.md): how much of light i reaches p, from
-// the depth atlas. Included by shading.glsl; empty unless the program is built with SHADOWS, so the
-// chapters before 14 compile exactly what they compiled before.
+// the depth atlas. Included through shading_features.glsl in programs built with SHADOWS only, so the
+// chapters before 14, and chapter 14 with no light shadowed, compile none of it.
 // Tables (common/base/shader_layout.h; common/shadows/shadow_atlas.c fills them):
 //   u_shadow_lights, one texel per light: first tile (-1: unshadowed), faces (6: a cube, 1: a spot),
 //     the normal offset in texels, the PCF taps a side

@@ -4,6 +4,7 @@
 #include "app_internal.h"
 #include "data_dir.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "gpu_textures.h"
 #include "image.h"
@@ -336,6 +337,14 @@ static int app_open(app *a, const app_desc *desc, const cli_options *opt)
     return rc;
 }
 
+bool app_scene_features(app *a)
+{
+    char defines[256];
+    a->features = shader_features_of(&a->scene);
+    gl_program_compiled_reset();
+    return shader_features_defines(&a->features, defines, sizeof defines) && gl_program_set_scene_defines(defines);
+}
+
 /* GL resources of the runner and the chapter. */
 static int app_setup(app *a, const app_desc *desc)
 {
@@ -345,6 +354,8 @@ static int app_setup(app *a, const app_desc *desc)
     gpu_textures_set_anisotropy(a->options->anisotropy > 0 ? (float)a->options->anisotropy : GPU_TEXTURES_ANISOTROPY);
     if (!gpu_scene_create(&a->scene, &a->gs))
         return EXIT_CODE_USAGE; /* a model file that cannot be loaded is an input error */
+    if (!app_scene_features(a))
+        return EXIT_CODE_RUNTIME;
     if (desc->accepts_scene && !desc->accepts_scene(a))
         return EXIT_CODE_USAGE; /* a scene beyond the chapter's limits is an input error too */
     a->query = gl_query_create();

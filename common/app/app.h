@@ -48,6 +48,7 @@
 #include "gpu_scene.h"
 #include "keys.h"
 #include "scene.h"
+#include "shader_features.h"
 
 /* The chapter's overlay lines' room: more than any chapter writes; one that fills it is told (the
  * runner logs it), never cut silently. */
@@ -58,6 +59,7 @@ typedef struct app {
     const cli_desc *cli;
     scene scene;
     gpu_scene gs;
+    shader_features features; /* what the scene uses: every program is built for it (app_scene_features) */
     app_forward forward; /* the forward renderers every chapter can switch to */
     fbo target;
     int width, height;

@@ -2,6 +2,7 @@
 #include "app_internal.h"
 
 #include "frame_stats.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "platform.h"
 
@@ -43,6 +44,30 @@ static void print_passes(const app *a, const double *pass_ms, int n)
     printf(" pass_clock=%s", frame_timer_clock(&a->timer));
 }
 
+/* "programs: compiled=N vert+frag[DEFINES] ...": every program the run built, with its own defines
+ * (the scene's are the bench line's features), so a reader sees the variants a scene asked for. */
+static void print_programs(void)
+{
+    const gl_program_info *list;
+    int n = gl_program_compiled(&list);
+    printf("programs: compiled=%d", gl_program_compiled_total());
+    for (int i = 0; i < n; i++) {
+        putchar(' ');
+        for (const char *c = list[i].name; *c; c++)
+            if (*c != ' ')
+                putchar(*c);
+        /* "SHADOWS 1 GBUFFER_NORMAL 2" as [SHADOWS,GBUFFER_NORMAL:2] */
+        char name[96], value[32];
+        int used = 0;
+        for (const char *d = list[i].defines; sscanf(d, "%95s %31s%n", name, value, &used) == 2; d += used)
+            printf("%c%s%s%s", d == list[i].defines ? '[' : ',', name, strcmp(value, "1") ? ":" : "",
+                   strcmp(value, "1") ? value : "");
+        if (list[i].defines[0])
+            putchar(']');
+    }
+    printf("\n");
+}
+
 void app_bench_print(const app *a, double *ms, double *pass_ms, int n)
 {
     const frame_stats st = frame_stats_of(ms, n);
@@ -57,6 +82,9 @@ void app_bench_print(const app *a, double *ms, double *pass_ms, int n)
            a->shaded_pixels, platform_backend_name());
     print_token((const char *)glGetString(GL_RENDERER));
     print_passes(a, pass_ms, n);
-    printf("\n");
+    char features[160];
+    shader_features_describe(&a->features, features, sizeof features);
+    printf(" features=%s\n", features[0] ? features : "none");
+    print_programs();
     fflush(stdout);
 }

@@ -4,6 +4,7 @@
 #include "app_internal.h"
 #include "exit_code.h"
 #include "gbuffer.h"
+#include "gl_program.h"
 #include "gl_util.h"
 #include "log.h"
 
@@ -24,6 +25,7 @@ struct app_embed {
     bool no_linear; /* a frame with linear output was asked for and not drawn: do not ask again */
     const gbuffer_layout *saved_layout; /* the default layout before a metallic-roughness scene changed it */
     bool saved_emissive;                /* whether the default G-buffer had RT2 (emissive) before */
+    char saved_defines[512];            /* the scene defines programs got before (gl_program.h) */
 };
 
 /* The chapters open now: each keeps its passes in file-static state. */
@@ -89,6 +91,8 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
     }
     e->desc = desc;
     e->saved_emissive = gbuffer_default_emissive();
+    /* the caller's scene defines come back on close */
+    snprintf(e->saved_defines, sizeof e->saved_defines, "%s", gl_program_scene_defines());
     e->cli = app_cli_of(desc, e->renderers_plus);
     app *a = &e->a;
     bool ok = parse_args(e, args, e->argv, &e->opt);
@@ -97,12 +101,13 @@ bool app_embed_open(const app_desc *desc, const char *const *args, const gpu_sce
         a->width = gs->view.width, a->height = gs->view.height;
         a->scene = *gs->src; /* a view of the caller's scene: never destroyed here */
         a->gs = *gs;
+        ok = app_scene_features(a); /* the scene's features for the chapter's programs */
         a->query = gl_query_create();
         /* --gbuffer as the runner takes it; a scene with metallic-roughness materials is drawn with a
          * layout that holds them. The layout before is restored on close. */
         const gbuffer_layout *asked = e->opt.gbuffer ? gbuffer_layout_find(e->opt.gbuffer) : NULL;
         const gbuffer_layout *layout = gbuffer_layout_for_chapter(asked, gs->src, desc->prefers_reversed_z);
-        ok = layout != NULL;
+        ok = ok && layout != NULL;
         /* An emissive scene's G-buffers get RT2; restored on close, as the layout is. */
         gbuffer_set_default_emissive(gbuffer_scene_emits(gs->src));
         if (ok && layout != gbuffer_default_layout()) {
@@ -229,6 +234,7 @@ void app_embed_close(app_embed *e)
     if (e->saved_layout)
         gbuffer_set_default_layout(e->saved_layout);
     gbuffer_set_default_emissive(e->saved_emissive);
+    gl_program_set_scene_defines(e->saved_defines);
     mark_open(e->desc, false);
     free(e);
 }

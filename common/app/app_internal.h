@@ -42,11 +42,15 @@ void app_bench_print(const app *a, double *ms, double *pass_ms, int n);
  *                                       default cut-off, Forward+ beside forward (its list in
  *                                       renderers_plus, APP_RENDERERS_MAX entries, kept by the caller)
  *   app_init(a, cli, opt)               a zeroed app for those options
- *   app_target_make(a)                  a->target at a->width x a->height (RGBA8 + 32-bit float depth) */
+ *   app_target_make(a)                  a->target at a->width x a->height (RGBA8 + 32-bit float depth)
+ *   app_scene_features(a)               a->features from a->scene, and their defines set for every
+ *                                       program built from then on (gl_program_set_scene_defines);
+ *                                       the list of compiled programs starts again */
 #define APP_RENDERERS_MAX 32
 cli_desc app_cli_of(const app_desc *desc, const char **renderers_plus);
 void app_init(app *a, const cli_desc *cli, const cli_options *opt);
 bool app_target_make(app *a);
+bool app_scene_features(app *a);
 
 /* The command line's other consequences (app_options.c):
  *   app_print_gl_info(opt, program)     --gl-info: key=value lines about the context; an exit code

@@ -12,7 +12,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_SOURCES 16
+#define MAX_SOURCES 32
+
+/* The scene's feature defines (gl_program_set_scene_defines), added to every program. */
+static char scene_defines[512];
+
+/* The programs compiled since the context was made: what each was built from (gl_program_compiled). */
+#define MAX_COMPILED 256
+static gl_program_info compiled_list[MAX_COMPILED];
+static int compiled_count, compiled_total;
 
 const char *gl_shader_dir(void)
 {
@@ -86,7 +94,7 @@ static bool append_source(source_text *s, const char *label, const char *text, c
 /* Appends shaders/<name> to s; the top-level file keeps its #version line first, then the defines. */
 static bool append_file(source_text *s, const char *name, const char *defines, int depth)
 {
-    if (depth > 4 || s->count >= MAX_SOURCES) {
+    if (depth > 6 || s->count >= MAX_SOURCES) {
         log_error("shaders/%s: includes nested too deeply", name);
         return false;
     }
@@ -114,6 +122,19 @@ static bool append_layout(source_text *s)
     ok = ok && text_append(s, line, strlen(line));
     SHADER_LAYOUT(APPEND_DEFINE)
 #undef APPEND_DEFINE
+    return ok;
+}
+
+/* "A 1\nB 2" as #define lines. */
+static bool append_defines(source_text *s, const char *defines)
+{
+    bool ok = true;
+    for (const char *d = defines; ok && d && *d;) {
+        const char *e = strchr(d, '\n');
+        size_t dn = e ? (size_t)(e - d) : strlen(d);
+        ok = text_append(s, "#define ", 8) && text_append(s, d, dn) && text_append(s, "\n", 1);
+        d = e ? e + 1 : d + dn;
+    }
     return ok;
 }
 
@@ -145,13 +166,8 @@ static bool append_source(source_text *s, const char *label, const char *text, c
                     log_error("%s:1: the first line must be #version", s->names[id]);
                     ok = false;
                 } else {
-                    for (const char *d = defines; ok && d && *d;) {
-                        const char *e = strchr(d, '\n');
-                        size_t dn = e ? (size_t)(e - d) : strlen(d);
-                        ok = text_append(s, "#define ", 8) && text_append(s, d, dn) && text_append(s, "\n", 1);
-                        d = e ? e + 1 : d + dn;
-                    }
-                    ok = ok && append_layout(s) && text_printf(s, "#line %d %d\n", 2, id);
+                    ok = append_defines(s, defines) && append_defines(s, scene_defines) && append_layout(s) &&
+                         text_printf(s, "#line %d %d\n", 2, id);
                 }
             }
         }
@@ -210,8 +226,23 @@ static GLuint compile(GLenum type, const char *name, const char *text, const cha
     return sh;
 }
 
-/* The stages (0 where one failed to compile: nothing is linked) into one program; `what` names it. */
-static GLuint link(const GLuint *stages, int count, const char *what)
+/* A program linked: what it was built from, for gl_program_compiled. */
+static void note_compiled(GLuint program, const char *what, const char *defines)
+{
+    compiled_total++;
+    if (compiled_count == MAX_COMPILED)
+        return;
+    gl_program_info *c = &compiled_list[compiled_count++];
+    c->program = program;
+    snprintf(c->name, sizeof c->name, "%s", what);
+    snprintf(c->defines, sizeof c->defines, "%s", defines ? defines : "");
+    for (char *d = c->defines; *d; d++)
+        *d = *d == '\n' ? ' ' : *d;
+}
+
+/* The stages (0 where one failed to compile: nothing is linked) into one program; `what` names it,
+ * `defines` are the program's own (the scene's are noted once, gl_program_scene_defines). */
+static GLuint link(const GLuint *stages, int count, const char *what, const char *defines)
 {
     bool compiled = true;
     for (int i = 0; i < count; i++)
@@ -235,6 +266,7 @@ static GLuint link(const GLuint *stages, int count, const char *what)
         return 0;
     }
     gl_live_objects_add(1);
+    note_compiled(p, what, defines);
     /* The material images' samplers (shaders/material_maps.glsl) on their own units from the start: a
      * pass that binds no images must not leave them on unit 0, where another sampler type is
      * (two types on one unit make every draw GL_INVALID_OPERATION). */
@@ -263,7 +295,7 @@ GLuint gl_program_load(const char *vert, const char *frag, const char *defines)
     GLuint vs = compile(GL_VERTEX_SHADER, vert, NULL, defines);
     const GLuint stages[2] = {vs, vs ? compile(GL_FRAGMENT_SHADER, frag, NULL, defines) : 0};
     char what[400];
-    return link(stages, 2, pair_name(vert, frag, what, sizeof what));
+    return link(stages, 2, pair_name(vert, frag, what, sizeof what), defines);
 }
 
 GLuint gl_program_load_extra(const char *vert, const char *frag, const char *defines, const gl_program_extra *extra)
@@ -307,7 +339,7 @@ gl_program_extra gl_program_extra_join(gl_program_extra_pair *pair, const gl_pro
 GLuint gl_compute_program_load(const char *comp, const char *defines)
 {
     const GLuint stage = compile(GL_COMPUTE_SHADER, comp, NULL, defines);
-    return link(&stage, 1, comp);
+    return link(&stage, 1, comp, defines);
 }
 
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines)
@@ -318,14 +350,49 @@ GLuint gl_program_create(const char *name, const char *vert_text, const char *fr
     GLuint vs = compile(GL_VERTEX_SHADER, vname, vert_text, defines);
     const GLuint stages[2] = {vs, vs ? compile(GL_FRAGMENT_SHADER, fname, frag_text, defines) : 0};
     char what[400];
-    return link(stages, 2, pair_name(vname, fname, what, sizeof what));
+    return link(stages, 2, pair_name(vname, fname, what, sizeof what), defines);
 }
 
 void gl_program_destroy(GLuint *program)
 {
     if (*program) {
+        for (int i = 0; i < compiled_count; i++)
+            if (compiled_list[i].program == *program)
+                compiled_list[i].program = 0;
         glDeleteProgram(*program);
         gl_live_objects_add(-1);
         *program = 0;
     }
+}
+
+bool gl_program_set_scene_defines(const char *defines)
+{
+    int n = snprintf(scene_defines, sizeof scene_defines, "%s", defines ? defines : "");
+    if (n < (int)sizeof scene_defines)
+        return true;
+    log_error("the scene's shader defines are longer than %zu bytes", sizeof scene_defines - 1);
+    scene_defines[0] = '\0';
+    return false;
+}
+
+const char *gl_program_scene_defines(void)
+{
+    return scene_defines;
+}
+
+int gl_program_compiled(const gl_program_info **list)
+{
+    if (list)
+        *list = compiled_list;
+    return compiled_count;
+}
+
+int gl_program_compiled_total(void)
+{
+    return compiled_total;
+}
+
+void gl_program_compiled_reset(void)
+{
+    compiled_count = compiled_total = 0;
 }

@@ -21,6 +21,16 @@
  *   gl_program_destroy(&program)
  *   gl_shader_dir()                       where shaders are read from: data_dir()/shaders, or
  *                                         $COURSE_SHADER_DIR
+ *   gl_program_set_scene_defines(defines) defines every program compiled from now on gets after its
+ *                                         own: the scene's features (common/scene/shader_features.h),
+ *                                         set by the runner before a chapter builds its programs;
+ *                                         NULL or "": none (a program then gets every feature)
+ *   gl_program_scene_defines()            those defines
+ *   gl_program_compiled(&list)            the programs linked since the last reset, in order (at most
+ *                                         256 kept): name, own defines, and the program while it lives
+ *                                         (0 once destroyed); --bench prints them, tests inspect them
+ *   gl_program_compiled_total()           how many were linked, the ones past 256 too
+ *   gl_program_compiled_reset()           forget them (the runner, when it opens a scene)
  *
  * After the #version line every program gets the `defines`, then shader_layout.h's constants as
  * #defines (SHADER_...). Each included file is its own GLSL source-string number (#line L S), so
@@ -31,6 +41,8 @@
 #define COMMON_GL_PROGRAM_H
 
 #include <glad/gl.h>
+
+#include <stdbool.h>
 
 /* What a later chapter adds to the programs a module builds (chapter 14's shadows in chapter 00's
  * forward renderer and chapter 11's cluster passes): defines after the module's own, and a function
@@ -47,6 +59,13 @@ typedef struct gl_program_extra_pair {
     char defines[256];
 } gl_program_extra_pair;
 
+/* A program as gl_program_compiled lists it. */
+typedef struct gl_program_info {
+    GLuint program; /* 0 once destroyed */
+    char name[96];  /* "forward.vert + forward.frag" */
+    char defines[256]; /* its own defines, space-separated ("TRANSPARENT 1 SHADOWS 1"), the scene's not */
+} gl_program_info;
+
 GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
 GLuint gl_program_load_extra(const char *vert, const char *frag, const char *defines, const gl_program_extra *extra);
 void gl_program_extra_bind(const gl_program_extra *extra, GLuint program);
@@ -56,5 +75,10 @@ GLuint gl_compute_program_load(const char *comp, const char *defines);
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
 void gl_program_destroy(GLuint *program);
 const char *gl_shader_dir(void);
+bool gl_program_set_scene_defines(const char *defines);
+const char *gl_program_scene_defines(void);
+int gl_program_compiled(const gl_program_info **list);
+int gl_program_compiled_total(void);
+void gl_program_compiled_reset(void);
 
 #endif

@@ -56,3 +56,14 @@ set_tests_properties(lessons.screenshots_ignored PROPERTIES LABELS unit SKIP_RET
 add_test(NAME lessons.page_goldens
   COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/lessons/screenshots_ignored.py --goldens ${CMAKE_SOURCE_DIR})
 set_tests_properties(lessons.page_goldens PROPERTIES LABELS unit)
+# Chapter 00's shading.glsl names no later chapter's feature, and each feature's file is included only
+# under its define (tests/lessons/shading_features.py); the check refuses tests/data/shading_bad (a call
+# into chapter 14's lookup, chapter 17's file included unconditionally, files included nowhere).
+add_test(NAME lessons.shading_features
+  COMMAND ${SYSTEM_PYTHON3} ${CMAKE_SOURCE_DIR}/tests/lessons/shading_features.py ${CMAKE_SOURCE_DIR}/shaders)
+add_test(NAME lessons.shading_features_refused
+  COMMAND ${BASH} -c "out=$(${SYSTEM_PYTHON3} tests/lessons/shading_features.py tests/data/shading_bad) && exit 1; \
+    echo \"$out\"; grep -q \"names 'shadow'\" <<<\"$out\" && grep -q 'includes ambient_occlusion.glsl outside' <<<\"$out\" && \
+    grep -q 'material_pbr.glsl .* included by none' <<<\"$out\""
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(lessons.shading_features lessons.shading_features_refused PROPERTIES LABELS unit)

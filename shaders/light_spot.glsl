@@ -1,0 +1,36 @@
+// light_spot.glsl - chapter 09's spot light (docs/09_spot_lights.md): a point light inside a cone.
+// Included through light_kinds.glsl in programs built for a scene with spots (LIGHT_SPOT).
+
+// A spot's cone: its unit axis and the cosines of its half-angles. A point light is a spot without
+// one (direction 0, both cosines -1): spot_factor() is 1 for it everywhere.
+struct light_cone {
+    vec3 direction;
+    float cos_outer;
+    float cos_inner;
+};
+
+const light_cone NO_CONE = light_cone(vec3(0.0), -1.0, -1.0);
+
+light_cone light_fetch_cone(int i)
+{
+    int t = SHADER_LIGHT_TEXELS * i;
+    return light_cone(texelFetch(u_lights, t + SHADER_LIGHT_TEXEL_SPOT).xyz, texelFetch(u_lights, t + 1).w,
+                      texelFetch(u_lights, t + 2).w);
+}
+
+// smoothstep(cos(outer), cos(inner), dot(-l, D)), l the unit vector from the surface to the light:
+// 1 inside the inner cone, 0 outside the outer one. With inner = outer smoothstep is undefined
+// (its edges are equal): a hard edge instead.
+float spot_factor(light_cone C, vec3 l)
+{
+    float c = dot(-l, C.direction);
+    if (C.cos_inner <= C.cos_outer)
+        return c >= C.cos_outer ? 1.0 : 0.0;
+    return smoothstep(C.cos_outer, C.cos_inner, c);
+}
+
+// What shading.glsl multiplies a light by: its spot factor (1 for a point light).
+float light_cone_factor(light_cone C, vec3 l)
+{
+    return spot_factor(C, l);
+}
