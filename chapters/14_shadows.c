@@ -18,7 +18,9 @@
  *      the tile's frustum drawn, depth only, slope-scaled by --slope-bias
  *   3. the frame: chapter 11's, with the programs built with SHADOWS and the atlas bound
  *      (shadow_atlas_extra): a fragment finds the face from the light-to-point vector, moves along
- *      its normal by --normal-offset texels and averages --pcf x --pcf comparisons inside the tile
+ *      its normal by --normal-offset texels and averages --pcf x --pcf comparisons inside the tile.
+ *      A frame with no light shadowed (--shadows 0, every light `shadow off`, or K) runs chapter 11's
+ *      own programs, built without SHADOWS: shadows cost nothing while off (use_shadow_programs)
  * Read docs/14_shadows.md alongside.
  */
 #include "app.h"
@@ -73,6 +75,8 @@ static const gl_pass_state deferred_pass = {.depth_write = false};
 
 static struct {
     shadow_atlas atlas;
+    gl_program_extra extra; /* the atlas's SHADOWS define and inputs (shadow_atlas_extra) */
+    int shadow_programs;    /* the last frame's: 1 built with SHADOWS, 0 without, -1 none yet */
     gbuffer g;
     clusters c;
     forward fwd;
@@ -113,16 +117,17 @@ static bool init(app *a)
     shadow_plan_desc desc;
     GLenum format;
     float slope;
+    state.shadow_programs = -1;
     if (!read_options(a, &desc, &format, &slope) || !shadow_atlas_create(&state.atlas, &desc, format, slope))
         return false;
     /* chapter 11's lists where it makes them by default, its programs built with SHADOWS */
-    const gl_program_extra extra = shadow_atlas_extra(&state.atlas);
-    const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
+    state.extra = shadow_atlas_extra(&state.atlas);
+    const clusters_desc lists = {.compute = gl_have_compute(), .extra = state.extra};
     a->pass_state = &deferred_pass; /* the overlay shows it */
-    state.visibility_program = gl_program_load_extra("fullscreen.vert", "shadow_visibility.frag", NULL, &extra);
+    state.visibility_program = gl_program_load_extra("fullscreen.vert", "shadow_visibility.frag", NULL, &state.extra);
     return state.visibility_program && shadow_views_create(&state.views) &&
            gbuffer_create(&state.g, a->width, a->height) &&
-           clusters_create(&state.c, &lists) && forward_create_with(&state.fwd, &extra);
+           clusters_create(&state.c, &lists) && forward_create_with(&state.fwd, &state.extra);
 }
 
 static bool resize(app *a)
@@ -184,11 +189,26 @@ static bool draw_views(app *a)
     return ok;
 }
 
+/* The shading programs for this frame: built with SHADOWS while the plan shadows a light, chapter
+ * 11's own while none is (each variant built once, on first use: gl_program_variant). */
+static void use_shadow_programs(void)
+{
+    const bool shadowed = state.atlas.enabled && state.atlas.plan.stats.shadowed > 0;
+    const gl_program_extra *extra = shadowed ? &state.extra : NULL;
+    clusters_set_extra(&state.c, extra);
+    forward_set_extra(&state.fwd, extra);
+    if (state.shadow_programs != (int)shadowed) /* said once per change */
+        log_info("shadows: %s", shadowed ? "the lighting programs built with SHADOWS"
+                                         : "no light shadowed: the lighting programs built without SHADOWS");
+    state.shadow_programs = shadowed;
+}
+
 static bool frame(app *a)
 {
     /* 1., 2.: the plan and the tiles it says changed; then the frame, which reads them */
     if (!shadow_atlas_update(&state.atlas, &a->gs))
         return false;
+    use_shadow_programs();
     shadow_views_overlay(&state.atlas, a->overlay_lines, sizeof a->overlay_lines);
     a->time += (float)state.time_step; /* --time-step: the next frame's time (the window adds its own) */
     a->shaded_pixels = -1;

@@ -31,7 +31,7 @@ bool clusters_create(clusters *c, const clusters_desc *desc)
 void clusters_destroy(clusters *c)
 {
     for (int i = 0; i < CLUSTERS_PROGRAM_COUNT; i++)
-        gl_program_destroy(&c->programs[i]);
+        gl_program_variants_destroy(&c->programs[i]);
     gl_buffer_destroy(&c->range_buffer);
     gl_buffer_destroy(&c->list_buffer);
     gl_texture_destroy(&c->range_texture);
@@ -121,9 +121,12 @@ GLuint clusters_program(clusters *c, clusters_program_id which)
         [CLUSTERS_PROGRAM_DEFERRED] = {"fullscreen.vert", "clustered_deferred.frag", NULL},
         [CLUSTERS_PROGRAM_GLASS] = {"forward.vert", "forward_plus.frag", "TRANSPARENT 1"},
     };
-    if (!c->programs[which])
-        c->programs[which] = gl_program_load_extra(files[which][0], files[which][1], files[which][2], &c->desc.extra);
-    return c->programs[which];
+    return gl_program_variant(&c->programs[which], files[which][0], files[which][1], files[which][2], &c->desc.extra);
+}
+
+void clusters_set_extra(clusters *c, const gl_program_extra *extra)
+{
+    c->desc.extra = extra ? *extra : (gl_program_extra){0};
 }
 
 static int view_mode(clusters_view view)

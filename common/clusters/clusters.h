@@ -18,6 +18,9 @@
  *                                     first_unit + 1, and the uniforms of shaders/clusters.glsl for the
  *                                     grid and the view of the last assignment
  *   clusters_program(c, which)        one of the programs, built on first use; 0 (logged) on failure
+ *   clusters_set_extra(c, extra)      desc.extra from the next draw on (NULL: none); each variant's
+ *                                     programs built once and kept (chapter 14: its shadows' programs
+ *                                     only while a light is shadowed)
  *   clusters_use(c, gs, program, view)
  *                                     `program` in use with the lights, the lists, the eye and the
  *                                     view (what the shader writes: clusters_view), and desc.extra's
@@ -95,7 +98,7 @@ typedef struct clusters {
     float (*spheres)[4]; /* per light, its bounding sphere in view space */
     int sphere_cap;
     GLuint range_buffer, range_texture, list_buffer, list_texture;
-    GLuint programs[CLUSTERS_PROGRAM_COUNT];
+    gl_program_variants programs[CLUSTERS_PROGRAM_COUNT]; /* each with desc.extra as it was when drawn */
     fbo count_target; /* RGBA32F + depth: the count view */
     float *count_pixels;
     long evaluations, covered;
@@ -108,6 +111,7 @@ void clusters_upload_lists(clusters *c);
 bool clusters_check(clusters *c, int lights, int limit);
 void clusters_bind(const clusters *c, GLuint program, int first_unit);
 GLuint clusters_program(clusters *c, clusters_program_id which);
+void clusters_set_extra(clusters *c, const gl_program_extra *extra);
 void clusters_use(const clusters *c, const gpu_scene *gs, GLuint program, clusters_view view);
 bool clusters_draw_depth(clusters *c, const gpu_scene *gs);
 bool clusters_shade_glass(clusters *c, const gpu_scene *gs, const gl_pass_state *const passes[], int pass_count,

@@ -365,6 +365,38 @@ void gl_program_destroy(GLuint *program)
     }
 }
 
+GLuint gl_program_variant(gl_program_variants *v, const char *vert, const char *frag, const char *defines,
+                          const gl_program_extra *extra)
+{
+    char key[sizeof v->slot[0].key];
+    const char *more = extra && extra->defines ? extra->defines : "";
+    if (snprintf(key, sizeof key, "%s|%s", defines ? defines : "", more) >= (int)sizeof key) {
+        log_error("%s + %s: defines longer than %zu bytes", vert, frag, sizeof key - 1);
+        return 0;
+    }
+    for (int i = 0; i < GL_PROGRAM_VARIANTS; i++)
+        if (v->slot[i].program && strcmp(v->slot[i].key, key) == 0)
+            return v->slot[i].program;
+    int at = 0;
+    while (at < GL_PROGRAM_VARIANTS && v->slot[at].program)
+        at++;
+    if (at == GL_PROGRAM_VARIANTS) {
+        at = v->next;
+        v->next = (v->next + 1) % GL_PROGRAM_VARIANTS;
+        gl_program_destroy(&v->slot[at].program);
+    }
+    v->slot[at].program = gl_program_load_extra(vert, frag, defines, extra);
+    memcpy(v->slot[at].key, key, sizeof key);
+    return v->slot[at].program;
+}
+
+void gl_program_variants_destroy(gl_program_variants *v)
+{
+    for (int i = 0; i < GL_PROGRAM_VARIANTS; i++)
+        gl_program_destroy(&v->slot[i].program);
+    memset(v, 0, sizeof *v);
+}
+
 bool gl_program_set_scene_defines(const char *defines)
 {
     int n = snprintf(scene_defines, sizeof scene_defines, "%s", defines ? defines : "");

@@ -19,6 +19,11 @@
  *                                         second's), a bind that calls first's then second's; `pair`
  *                                         holds them and must outlive every draw with the programs
  *   gl_program_destroy(&program)
+ *   gl_program_variant(v, vert, frag, defines, extra)
+ *                                         one program of a set kept per variant: the one built with
+ *                                         these defines and extra's, built on first use and found again
+ *                                         by them (chapter 14's shadows on and off: each set once)
+ *   gl_program_variants_destroy(v)
  *   gl_shader_dir()                       where shaders are read from: data_dir()/shaders, or
  *                                         $COURSE_SHADER_DIR
  *   gl_program_set_scene_defines(defines) defines every program compiled from now on gets after its
@@ -66,6 +71,17 @@ typedef struct gl_program_info {
     char defines[256]; /* its own defines, space-separated ("TRANSPARENT 1 SHADOWS 1"), the scene's not */
 } gl_program_info;
 
+/* gl_program_variant's set: up to GL_PROGRAM_VARIANTS programs of one pair of files, by their defines
+ * (the oldest goes when a new one needs its place). Zero is an empty set. */
+#define GL_PROGRAM_VARIANTS 4
+typedef struct gl_program_variants {
+    struct {
+        char key[384]; /* the defines, then the extra's */
+        GLuint program;
+    } slot[GL_PROGRAM_VARIANTS];
+    int next; /* the slot the next new variant takes when all are used */
+} gl_program_variants;
+
 GLuint gl_program_load(const char *vert, const char *frag, const char *defines);
 GLuint gl_program_load_extra(const char *vert, const char *frag, const char *defines, const gl_program_extra *extra);
 void gl_program_extra_bind(const gl_program_extra *extra, GLuint program);
@@ -74,6 +90,9 @@ gl_program_extra gl_program_extra_join(gl_program_extra_pair *pair, const gl_pro
 GLuint gl_compute_program_load(const char *comp, const char *defines);
 GLuint gl_program_create(const char *name, const char *vert_text, const char *frag_text, const char *defines);
 void gl_program_destroy(GLuint *program);
+GLuint gl_program_variant(gl_program_variants *v, const char *vert, const char *frag, const char *defines,
+                          const gl_program_extra *extra);
+void gl_program_variants_destroy(gl_program_variants *v);
 const char *gl_shader_dir(void);
 bool gl_program_set_scene_defines(const char *defines);
 const char *gl_program_scene_defines(void);

@@ -33,6 +33,18 @@ const forward_options *forward_variant_find(const char *name)
     return NULL;
 }
 
+/* One of the shading programs with the extra as it is now (built on first use, then kept). */
+static GLuint shading_program(forward *f, forward_program which)
+{
+    static const char *const defines[FORWARD_PROGRAM_COUNT] = {NULL, "OUTPUT_LINEAR 1", "TRANSPARENT 1"};
+    return gl_program_variant(&f->shading[which], "forward.vert", "forward.frag", defines[which], &f->extra);
+}
+
+void forward_set_extra(forward *f, const gl_program_extra *extra)
+{
+    f->extra = extra ? *extra : (gl_program_extra){0};
+}
+
 bool forward_create(forward *f)
 {
     return forward_create_with(f, NULL);
@@ -43,9 +55,8 @@ bool forward_create_with(forward *f, const gl_program_extra *extra)
     memset(f, 0, sizeof *f);
     if (extra)
         f->extra = *extra;
-    f->program = gl_program_load_extra("forward.vert", "forward.frag", NULL, &f->extra);
     f->depth_program = gl_program_load("forward.vert", "depth_only.frag", NULL);
-    if (!f->program || !f->depth_program) {
+    if (!shading_program(f, FORWARD_PROGRAM_LIT) || !f->depth_program) {
         forward_destroy(f);
         return false;
     }
@@ -58,10 +69,9 @@ bool forward_create_with(forward *f, const gl_program_extra *extra)
 
 void forward_destroy(forward *f)
 {
-    gl_program_destroy(&f->program);
+    for (int i = 0; i < FORWARD_PROGRAM_COUNT; i++)
+        gl_program_variants_destroy(&f->shading[i]);
     gl_program_destroy(&f->depth_program);
-    gl_program_destroy(&f->linear_program);
-    gl_program_destroy(&f->glass_program);
     present_pass_destroy(&f->present);
     fbo_destroy(&f->hdr);
     gl_buffer_destroy(&f->list_buffer);
@@ -127,15 +137,6 @@ void forward_draw_depth(const forward *f, const gpu_scene *gs)
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-/* The linear program is built on first use: only the benchmark, the tests and scenes with
- * transparent objects ask for it. */
-static GLuint shading_program(forward *f, bool linear)
-{
-    if (linear && !f->linear_program)
-        f->linear_program = gl_program_load_extra("forward.vert", "forward.frag", "OUTPUT_LINEAR 1", &f->extra);
-    return linear ? f->linear_program : f->program;
-}
-
 /* What both shading programs read: the lights, the objects, the light lists, the eye. */
 static void bind_shading(const forward *f, const gpu_scene *gs, GLuint program, bool light_lists)
 {
@@ -154,7 +155,7 @@ static void bind_shading(const forward *f, const gpu_scene *gs, GLuint program, 
 /* The opaque objects, with the caller's depth state (chapter 00's pass 3). */
 static bool draw_opaque(forward *f, const gpu_scene *gs, forward_options options)
 {
-    GLuint program = shading_program(f, options.linear_output);
+    GLuint program = shading_program(f, options.linear_output ? FORWARD_PROGRAM_LINEAR : FORWARD_PROGRAM_LIT);
     if (!program)
         return false;
     frame_timer_mark("shading");
@@ -167,18 +168,17 @@ static bool draw_opaque(forward *f, const gpu_scene *gs, forward_options options
 
 bool forward_draw_transparent(forward *f, const gpu_scene *gs, const forward_glass *glass)
 {
-    if (!f->glass_program)
-        f->glass_program = gl_program_load_extra("forward.vert", "forward.frag", "TRANSPARENT 1", &f->extra);
-    if (!f->glass_program)
+    GLuint program = shading_program(f, FORWARD_PROGRAM_GLASS);
+    if (!program)
         return false;
     frame_timer_mark("transparent");
-    bind_shading(f, gs, f->glass_program, glass->light_lists);
-    glUniform1i(glGetUniformLocation(f->glass_program, "u_view"),
+    bind_shading(f, gs, program, glass->light_lists);
+    glUniform1i(glGetUniformLocation(program, "u_view"),
                 glass->overdraw ? SHADER_VIEW_OVERDRAW : SHADER_VIEW_LIT);
     const gl_pass_state *const *passes = glass->passes ? glass->passes : forward_glass_passes;
     int pass_count = glass->passes ? glass->pass_count : 2;
     gl_samples_begin(f->query, glass->count_pixels);
-    gpu_scene_draw_transparent(gs, f->glass_program, glass->order, passes, pass_count);
+    gpu_scene_draw_transparent(gs, program, glass->order, passes, pass_count);
     f->shaded_pixels = gl_samples_end(f->query, glass->count_pixels);
     gl_pass_state_reset();
     return true;

@@ -3,6 +3,10 @@
  *   forward_create(f)                       compile the shaders
  *   forward_create_with(f, extra)           the same with a later chapter's additions to every
  *                                           shading program (gl_program.h; chapter 14's shadows)
+ *   forward_set_extra(f, extra)             the additions from the next draw on (NULL: none): each
+ *                                           variant's programs are built once, on first use, and
+ *                                           kept (chapter 14: its shadows' programs only while a
+ *                                           light is shadowed)
  *   forward_destroy(f)
  *   forward_render(f, gs, target, options)  draw gs into the framebuffer `target` (cleared here):
  *                                           the three passes below with the state they need;
@@ -94,9 +98,13 @@ typedef struct forward_glass {
 extern const gl_pass_state forward_glass_back_pass, forward_glass_front_pass;
 extern const gl_pass_state *const forward_glass_passes[2];
 
+/* The shading programs: lit, linear (OUTPUT_LINEAR: the benchmark, the tests, scenes with glass) and
+ * glass (TRANSPARENT: scenes with transparent objects); each but lit built on first use. */
+typedef enum forward_program { FORWARD_PROGRAM_LIT, FORWARD_PROGRAM_LINEAR, FORWARD_PROGRAM_GLASS, FORWARD_PROGRAM_COUNT } forward_program;
+
 typedef struct forward {
-    GLuint program, depth_program, linear_program;
-    GLuint glass_program;                  /* built on first use: scenes with transparent objects */
+    gl_program_variants shading[FORWARD_PROGRAM_COUNT]; /* each with the extra as it was when drawn */
+    GLuint depth_program;
     present_pass present;                       /* the same */
     fbo hdr;                               /* such a scene's frame in linear radiance (RGBA32F) */
     GLuint list_buffer, list_texture;
@@ -105,11 +113,12 @@ typedef struct forward {
     size_t list_cap;
     long list_entries; /* sum of list lengths in the last frame */
     long shaded_pixels;
-    gl_program_extra extra; /* forward_create_with's */
+    gl_program_extra extra; /* forward_create_with's, or forward_set_extra's */
 } forward;
 
 bool forward_create(forward *f);
 bool forward_create_with(forward *f, const gl_program_extra *extra);
+void forward_set_extra(forward *f, const gl_program_extra *extra);
 void forward_destroy(forward *f);
 bool forward_render(forward *f, const gpu_scene *gs, GLuint target, forward_options options);
 bool forward_build_light_lists(forward *f, const gpu_scene *gs);
