@@ -193,14 +193,9 @@ static bool draw_views(app *a)
  * 11's own while none is (each variant built once, on first use: gl_program_variant). */
 static void use_shadow_programs(void)
 {
-    const bool shadowed = state.atlas.enabled && state.atlas.plan.stats.shadowed > 0;
-    const gl_program_extra *extra = shadowed ? &state.extra : NULL;
+    const gl_program_extra *extra = chapter_14_shadows_extra(&state.atlas, &state.extra, NULL, &state.shadow_programs);
     clusters_set_extra(&state.c, extra);
     forward_set_extra(&state.fwd, extra);
-    if (state.shadow_programs != (int)shadowed) /* said once per change */
-        log_info("shadows: %s", shadowed ? "the lighting programs built with SHADOWS"
-                                         : "no light shadowed: the lighting programs built without SHADOWS");
-    state.shadow_programs = shadowed;
 }
 
 static bool frame(app *a)
@@ -289,6 +284,19 @@ bool chapter_14_shadows_create(app *a, shadow_atlas *s, gl_program_extra *extra)
 bool chapter_14_shadows_update(shadow_atlas *s, const gpu_scene *gs)
 {
     return !s->depth_program || shadow_atlas_update(s, gs);
+}
+
+const gl_program_extra *chapter_14_shadows_extra(const shadow_atlas *s, const gl_program_extra *with,
+                                                 const gl_program_extra *without, int *said)
+{
+    if (!s->depth_program)
+        return without; /* no atlas (--shadows 0 in 15 to 19): nothing to switch, nothing said */
+    const bool shadowed = s->enabled && s->plan.stats.shadowed > 0;
+    if (*said != (int)shadowed) /* said once per change */
+        log_info("shadows: %s", shadowed ? "the lighting programs built with SHADOWS"
+                                         : "no light shadowed: the lighting programs built without SHADOWS");
+    *said = shadowed;
+    return shadowed ? with : without;
 }
 
 bool chapter_14_shadows_key(shadow_atlas *s)

@@ -81,7 +81,12 @@ static struct {
     fbo light; /* RGBA16F diffuse (+ specular luminance); rgb: and RGBA16F specular; pbr: and B */
     clusters c;
     shadow_atlas atlas; /* --shadows N: chapter 14's; nothing made without it */
-    GLuint thin_program, accumulation_program, combine_program;
+    GLuint thin_program, combine_program;
+    gl_program_variants accumulation; /* with chapter 14's SHADOWS while a light is shadowed, and without */
+    const char *defines;              /* the light buffer's: LIGHT_PREPASS_PBR on a metallic-roughness scene */
+    gl_program_extra shadows;         /* --shadows N: the atlas's define and inputs (none without) */
+    const gl_program_extra *extra;    /* this frame's: shadows, or none (chapter_14_shadows_extra) */
+    int shadow_programs;
     bool rgb; /* --specular rgb */
     bool pbr; /* the scene has metallic-roughness materials: LIGHT_PREPASS_PBR's buffers and shaders */
 } state;
@@ -94,29 +99,34 @@ static bool scene_has_pbr(const app *a)
     return false;
 }
 
+/* The accumulation program for this frame's shadows (each variant built once, on first use). */
+static GLuint accumulation_program(void)
+{
+    return gl_program_variant(&state.accumulation, "fullscreen.vert", "light_prepass_accum.frag", state.defines,
+                              state.extra);
+}
+
 static bool init(app *a)
 {
     state.pbr = scene_has_pbr(a);
     state.rgb = state.pbr || strcmp(app_extra(a, "specular"), "rgb") == 0; /* mono: refused for deferred */
-    const char *defines = state.pbr ? "LIGHT_PREPASS_PBR 1" : NULL;
+    const char *defines = state.defines = state.pbr ? "LIGHT_PREPASS_PBR 1" : NULL;
+    state.shadow_programs = -1;
     if (state.pbr)
         log_info("metallic-roughness scene: thin pass RGBA16F + depth, 12 bytes a pixel; light buffer "
                  "C, A, B in three RGBA16F, 24 bytes a pixel");
     a->pass_state = &combine_pass; /* the overlay shows it */
     a->work_name = "second geometry pass fragments";
     /* --shadows N: the accumulation pass and forward read chapter 14's atlas (none: no define, no input) */
-    gl_program_extra shadows;
-    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+    if (!chapter_14_shadows_create(a, &state.atlas, &state.shadows))
         return false;
-    app_forward_set_extra(&a->forward, &shadows);
+    app_forward_set_extra(&a->forward, &state.shadows);
     /* chapter 11's lists, made where it makes them by default; clusters_use binds the atlas */
-    const clusters_desc lists = {.compute = gl_have_compute(), .extra = shadows};
+    const clusters_desc lists = {.compute = gl_have_compute(), .extra = state.shadows};
+    state.extra = &state.shadows;
     state.thin_program = gl_program_load("forward.vert", "light_prepass_thin.frag", defines);
-    state.accumulation_program =
-        gl_program_load_extra("fullscreen.vert", "light_prepass_accum.frag", defines, &shadows);
     state.combine_program = gl_program_load("forward.vert", "light_prepass_combine.frag", defines);
-    return state.thin_program && state.accumulation_program && state.combine_program &&
-           clusters_create(&state.c, &lists);
+    return state.thin_program && accumulation_program() && state.combine_program && clusters_create(&state.c, &lists);
 }
 
 /* The thin target on the picture's depth texture, and the light buffer, at the picture's size: made
@@ -172,7 +182,9 @@ static bool draw_thin(const gpu_scene *gs)
 /* 3. light accumulation: per pixel, its cluster's lights' diffuse and specular sums, once. */
 static bool accumulate_lights(const gpu_scene *gs)
 {
-    const GLuint p = state.accumulation_program;
+    const GLuint p = accumulation_program();
+    if (!p)
+        return false;
     frame_timer_mark("light accumulation");
     glBindFramebuffer(GL_FRAMEBUFFER, state.light.id);
     glViewport(0, 0, state.light.width, state.light.height);
@@ -224,6 +236,10 @@ static bool frame(app *a)
 {
     if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
         return false;
+    /* shadows that are off cost nothing: the programs without them */
+    state.extra = chapter_14_shadows_extra(&state.atlas, &state.shadows, NULL, &state.shadow_programs);
+    clusters_set_extra(&state.c, state.extra);
+    app_forward_set_extra(&a->forward, state.extra);
     if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
     a->pass_state = &combine_pass;
@@ -260,7 +276,7 @@ static void cleanup(app *a)
     fbo_destroy(&state.light);
     fbo_destroy(&state.thin);
     gl_program_destroy(&state.combine_program);
-    gl_program_destroy(&state.accumulation_program);
+    gl_program_variants_destroy(&state.accumulation);
     gl_program_destroy(&state.thin_program);
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }

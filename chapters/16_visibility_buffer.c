@@ -84,7 +84,12 @@ static struct {
     vis_meshes meshes;
     clusters c;
     shadow_atlas atlas; /* --shadows N: chapter 14's; nothing made without it */
-    GLuint visibility_program, shading_program;
+    GLuint visibility_program;
+    gl_program_variants shading; /* with chapter 14's SHADOWS while a light is shadowed, and without */
+    char defines[32];            /* the shading pass's: VIS_SAMPLES with MSAA */
+    gl_program_extra shadows;    /* --shadows N: the atlas's define and inputs (none without) */
+    const gl_program_extra *extra; /* this frame's: shadows, or none (chapter_14_shadows_extra) */
+    int shadow_programs;
     GLuint map_samplers[2]; /* the material images read trilinear, without anisotropy (see make_samplers) */
 } state;
 
@@ -115,6 +120,13 @@ static bool accepts_scene(const app *a)
  * triangle. llvmpipe (Mesa 22.3) ignores those derivatives on a texture filtered anisotropically, so
  * the pass reads through sampler objects of its own: the arrays' trilinear filtering without the
  * anisotropy (docs/16_visibility_buffer.md, "Textures"). Forward matches it with --anisotropy 1. */
+/* The shading program for this frame's shadows (each variant built once, on first use). */
+static GLuint shading_program(void)
+{
+    return gl_program_variant(&state.shading, "fullscreen.vert", "visibility_shade.frag",
+                              state.samples > 1 ? state.defines : NULL, state.extra);
+}
+
 static void make_samplers(void)
 {
     glGenSamplers(2, state.map_samplers);
@@ -141,24 +153,22 @@ static bool init(app *a)
         !fbo_samples_supported((int)n, VIS_MAX_SAMPLES, "16_visibility_buffer: bad --samples"))
         return !(a->input_error = true);
     state.samples = (int)n;
-    char defines[32];
-    snprintf(defines, sizeof defines, "VIS_SAMPLES %d", state.samples);
+    snprintf(state.defines, sizeof state.defines, "VIS_SAMPLES %d", state.samples);
     /* --shadows N: the shading pass and forward read chapter 14's atlas (none: no define, no input) */
-    gl_program_extra shadows;
-    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+    state.shadow_programs = -1;
+    if (!chapter_14_shadows_create(a, &state.atlas, &state.shadows))
         return false;
-    app_forward_set_extra(&a->forward, &shadows);
-    const clusters_desc lists = {.compute = gl_have_compute(), .extra = shadows}; /* chapter 11's default */
+    state.extra = &state.shadows;
+    app_forward_set_extra(&a->forward, &state.shadows);
+    const clusters_desc lists = {.compute = gl_have_compute(), .extra = state.shadows}; /* chapter 11's default */
     state.vis_pass = cli_choice_index(vis_passes, app_extra(a, "vis-pass"));
     if (state.vis_pass != VIS_FULL)
         log_warn("16_visibility_buffer: --vis-pass %s: the picture is not the chapter's, timing only",
                  vis_passes[state.vis_pass]);
     state.visibility_program = gl_program_load("forward.vert", "visibility.frag",
                                                state.vis_pass != VIS_FULL ? "VIS_NO_PRIMITIVE_ID 1" : NULL);
-    state.shading_program = gl_program_load_extra("fullscreen.vert", "visibility_shade.frag",
-                                                  state.samples > 1 ? defines : NULL, &shadows);
     make_samplers();
-    return state.visibility_program && state.shading_program && vis_meshes_create(&state.meshes, &a->gs) &&
+    return state.visibility_program && shading_program() && vis_meshes_create(&state.meshes, &a->gs) &&
            clusters_create(&state.c, &lists);
 }
 
@@ -204,8 +214,10 @@ static bool draw_visibility(const gpu_scene *gs)
  * is the clear colour (the shader discards it). MSAA: the pixels of one id, then the edges. */
 static bool shade(app *a)
 {
-    const GLuint p = state.shading_program;
+    const GLuint p = shading_program();
     const gpu_scene *gs = &a->gs;
+    if (!p)
+        return false;
     frame_timer_mark("shading");
     glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
     glViewport(0, 0, a->width, a->height);
@@ -241,6 +253,10 @@ static bool frame(app *a)
 {
     if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
         return false;
+    /* shadows that are off cost nothing: the programs without them */
+    state.extra = chapter_14_shadows_extra(&state.atlas, &state.shadows, NULL, &state.shadow_programs);
+    clusters_set_extra(&state.c, state.extra);
+    app_forward_set_extra(&a->forward, state.extra);
     if (!app_renderer_is(a, "deferred"))
         return app_render_forward(a);
     a->pass_state = &shading_pass;
@@ -270,7 +286,7 @@ static void cleanup(app *a)
     }
     vis_meshes_destroy(&state.meshes);
     fbo_destroy(&state.ids);
-    gl_program_destroy(&state.shading_program);
+    gl_program_variants_destroy(&state.shading);
     gl_program_destroy(&state.visibility_program);
     memset(&state, 0, sizeof state); /* opened again (the benchmark does), init starts from nothing */
 }

@@ -72,7 +72,20 @@ static struct {
     ssao ao; /* the two passes, their targets and forward's pre-pass (common/render/ssao.c) */
     shadow_atlas atlas;           /* --shadows N: chapter 14's; nothing made without it */
     gl_program_extra_pair extras; /* the occlusion's inputs and the atlas's, for every shading program */
+    gl_program_extra occlusion, shadows, both; /* AMBIENT_OCCLUSION, SHADOWS (--shadows N), the two */
+    int shadow_programs;
 } state;
+
+/* This frame's shading programs: built with the occlusion while it is on and with chapter 14's
+ * shadows while a light is shadowed, so what is off costs nothing (each variant built once). */
+static void use_programs(void)
+{
+    const gl_program_extra *with = state.ao.on ? &state.both : &state.shadows;
+    const gl_program_extra *extra =
+        chapter_14_shadows_extra(&state.atlas, with, state.ao.on ? &state.occlusion : NULL, &state.shadow_programs);
+    clusters_set_extra(&state.c, extra);
+    forward_set_extra(&state.fwd, extra);
+}
 
 static bool init(app *a)
 {
@@ -84,11 +97,11 @@ static bool init(app *a)
     const ssao_desc desc = {.radius = (float)radius, .samples = (int)samples, .blur = (int)blur};
     /* chapter 11's lists where it makes them by default; its programs and forward's read the occlusion,
      * and with --shadows N chapter 14's atlas */
-    const gl_program_extra occlusion = {.defines = "AMBIENT_OCCLUSION 1", .bind = ssao_bind, .user = &state.ao};
-    gl_program_extra shadows;
-    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+    state.occlusion = (gl_program_extra){.defines = "AMBIENT_OCCLUSION 1", .bind = ssao_bind, .user = &state.ao};
+    state.shadow_programs = -1;
+    if (!chapter_14_shadows_create(a, &state.atlas, &state.shadows))
         return false;
-    const gl_program_extra extra = gl_program_extra_join(&state.extras, &occlusion, &shadows);
+    const gl_program_extra extra = state.both = gl_program_extra_join(&state.extras, &state.occlusion, &state.shadows);
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
     a->pass_state = &fullscreen_pass; /* the overlay shows it */
     bool ok = ssao_create(&state.ao, &desc) && gbuffer_create(&state.g, a->width, a->height) &&
@@ -136,6 +149,7 @@ static bool frame(app *a)
     a->shaded_pixels = -1;
     if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
         return false;
+    use_programs();
     bool ok = app_renderer_is(a, "deferred") ? frame_deferred(a)
                                              : frame_forward(a, a->target.id, app_renderer_is(a, "forward-plus"));
     if (ok && state.ao.on && !app_view_is(a, "lit"))

@@ -67,6 +67,8 @@ static struct {
     gbuffer g;
     clusters c;
     shadow_atlas atlas; /* --shadows N: chapter 14's; nothing made without it */
+    gl_program_extra shadows; /* its SHADOWS define and inputs (none without it) */
+    int shadow_programs;
     fbo linear;      /* RGBA32F: the lighting pass's linear radiance, before the exposure */
     fbo forward_linear; /* RGBA32F + depth: the forward renderers' linear radiance, the same way */
     present_pass present;
@@ -92,11 +94,11 @@ static bool init(app *a)
     glm_vec3_copy(a->scene.ambient, state.ambient);
     apply_ambient(a);
     /* --shadows N: chapter 11's shading pass and forward read chapter 14's atlas (none: no define) */
-    gl_program_extra shadows;
-    if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
+    state.shadow_programs = -1;
+    if (!chapter_14_shadows_create(a, &state.atlas, &state.shadows))
         return false;
-    app_forward_set_extra(&a->forward, &shadows);
-    const clusters_desc lists = {.compute = gl_have_compute(), .extra = shadows};
+    app_forward_set_extra(&a->forward, &state.shadows);
+    const clusters_desc lists = {.compute = gl_have_compute(), .extra = state.shadows};
     a->pass_state = &deferred_pass; /* the overlay shows it */
     state.channels_program = gl_program_load("fullscreen.vert", "pbr_channels.frag", NULL);
     return state.channels_program && gbuffer_create(&state.g, a->width, a->height) &&
@@ -186,6 +188,10 @@ static bool frame(app *a)
     write_overlay(a, deferred);
     if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
         return false;
+    /* shadows that are off cost nothing: the programs without them */
+    const gl_program_extra *extra = chapter_14_shadows_extra(&state.atlas, &state.shadows, NULL, &state.shadow_programs);
+    clusters_set_extra(&state.c, extra);
+    app_forward_set_extra(&a->forward, extra);
     if (!deferred)
         return frame_forward(a);
 

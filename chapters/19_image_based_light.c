@@ -80,7 +80,11 @@ static struct {
     ibl probes;
     ssao ao; /* chapter 17's occlusion, with its options */
     shadow_atlas atlas;           /* --shadows N: chapter 14's; nothing made without it */
-    gl_program_extra_pair extras; /* the ambient's inputs and the atlas's, for every shading program */
+    /* the shading programs' additions, by what is on (probes * 2 + occlusion): the ambient's defines
+     * and inputs, then the same with chapter 14's atlas (--shadows N) */
+    gl_program_extra ambient[4], shadowed[4];
+    gl_program_extra_pair pairs[4];
+    int shadow_programs;
     GLuint view_program;
     bool captured;
 } state;
@@ -91,6 +95,18 @@ static void bind_ambient(GLuint program, const void *user)
     (void)user;
     ibl_probes_bind(program, &state.probes);
     ssao_bind(program, &state.ao);
+}
+
+/* This frame's shading programs: built with the probes while they are on, the occlusion while it is
+ * on, chapter 14's shadows while a light is shadowed; what is off costs nothing (each variant built
+ * once, on first use). */
+static void use_programs(void)
+{
+    int on = 2 * state.probes.on + state.ao.on;
+    const gl_program_extra *extra =
+        chapter_14_shadows_extra(&state.atlas, &state.shadowed[on], &state.ambient[on], &state.shadow_programs);
+    clusters_set_extra(&state.c, extra);
+    forward_set_extra(&state.fwd, extra);
 }
 
 static bool init(app *a)
@@ -105,11 +121,17 @@ static bool init(app *a)
     const ibl_desc desc = {.size = (int)size, .levels = 5, .samples = (int)samples, .brdf_size = 64,
                            .brdf_samples = 512};
     const ssao_desc occlusion = {.radius = (float)radius, .samples = (int)directions, .blur = (int)blur};
-    const gl_program_extra ambient = {.defines = "IMAGE_BASED_LIGHT 1\nAMBIENT_OCCLUSION 1", .bind = bind_ambient};
+    static const char *const ambient_defines[4] = {NULL, "AMBIENT_OCCLUSION 1", "IMAGE_BASED_LIGHT 1",
+                                                   "IMAGE_BASED_LIGHT 1\nAMBIENT_OCCLUSION 1"};
     gl_program_extra shadows; /* --shadows N: chapter 14's atlas too */
+    state.shadow_programs = -1;
     if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
         return false;
-    const gl_program_extra extra = gl_program_extra_join(&state.extras, &ambient, &shadows);
+    for (int i = 0; i < 4; i++) {
+        state.ambient[i] = (gl_program_extra){.defines = ambient_defines[i], .bind = bind_ambient};
+        state.shadowed[i] = gl_program_extra_join(&state.pairs[i], &state.ambient[i], &shadows);
+    }
+    const gl_program_extra extra = state.shadowed[3];
     const clusters_desc lists = {.compute = gl_have_compute(), .extra = extra};
     a->pass_state = &fullscreen_pass; /* the overlay shows it */
     state.captured = false;
@@ -197,6 +219,7 @@ static bool frame(app *a)
     a->shaded_pixels = -1;
     if (!capture(&a->gs) || !chapter_14_shadows_update(&state.atlas, &a->gs)) /* before anything shades */
         return false;
+    use_programs();
     ibl_probes_pick(&state.probes, a->gs.view.eye);
     snprintf(a->overlay_lines, sizeof a->overlay_lines, "probes: %d, %d picked; captured in %.0f ms, %.1f MiB",
              state.probes.count, state.probes.picked_count, state.probes.capture_ms,

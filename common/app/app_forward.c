@@ -11,7 +11,11 @@ void app_forward_set_plus(const app_forward_plus *plus) { forward_plus = plus; }
 
 void app_forward_set_extra(app_forward *f, const gl_program_extra *extra)
 {
-    f->extra = *extra;
+    f->extra = extra ? *extra : (gl_program_extra){0};
+    if (f->have_fwd) /* made already: from the next draw on (each variant's programs built once) */
+        forward_set_extra(&f->fwd, &f->extra);
+    if (f->have_clusters)
+        clusters_set_extra(&f->c, &f->extra);
 }
 
 bool app_forward_is(const char *name)

@@ -7,8 +7,8 @@
  *   app_forward_set_plus(plus)          Forward+'s frame and count (chapter_11_forward_plus)
  *   app_forward_set_extra(f, extra)     a chapter's additions to every forward renderer's shading
  *                                       programs (chapter 14's shadows in chapters 15, 16 and 18),
- *                                       before the first draw: their defines, and the bind called on
- *                                       each program before it draws
+ *                                       from the next draw on (NULL: none): their defines, and the
+ *                                       bind called on each program before it draws
  *   app_forward_is(name)                whether name is one of them ("forward", "forward-naive",
  *                                       "forward-prepass", "forward-lists", "forward-plus")
  *   app_forward_draw(f, name, gs, target, options, out)

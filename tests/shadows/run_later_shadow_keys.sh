@@ -2,7 +2,8 @@
 # run_later_shadow_keys.sh IMGDIFF OUTDIR CHAPTER KEY [ARGS...] - chapter 14's shadows in a later
 # chapter (15 to 19, --shadows N), driven headless by a --script (the window's events, frame by frame):
 #   1. with --shadows 80, KEY turns them off: the picture is the chapter's own without --shadows, byte
-#      for byte; KEY again: the shadowed picture again
+#      for byte, drawn by the programs built without SHADOWS (off costs nothing); KEY again: the
+#      shadowed picture again, by the SHADOWS programs
 #   2. without --shadows, KEY changes nothing and says, in one line, to start with --shadows N
 # Skips (77) without a GL context; never passes without checking.
 set -u
@@ -38,6 +39,10 @@ same "$out.plain.png" "$out.off.png" "$key: shadows off, the picture without --s
 same "$out.on.png" "$out.on-again.png" "$key again: the shadowed picture again"
 grep -q 'shadows: off' "$out.stderr" "$out.stdout" && say "ok   $key says shadows off" ||
   say "FAIL no 'shadows: off' line after $key"
+said=$(cat "$out.stderr" "$out.stdout" | grep -o 'lighting programs built with[a-z]* SHADOWS' | tr '\n' '|')
+want='lighting programs built with SHADOWS|lighting programs built without SHADOWS|lighting programs built with SHADOWS|'
+[ "$said" = "$want" ] && say "ok   the programs switch: with SHADOWS, without after $key, with after $key again" ||
+  say "FAIL the programs' switches were '$said', want '$want'"
 
 cat >"$out.none.script" <<SCRIPT
 0 key $key
