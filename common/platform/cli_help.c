@@ -92,6 +92,8 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --anisotropy N           a material image's most samples along a footprint, 1 to 16 (1: off;\n"
             "                           default 8, where the context filters anisotropically)\n"
             "  --bench                  time frames (glFinish + monotonic clock) and print a 'bench:' line\n"
+            "                           (with the scene's features) and a 'programs:' line (every shader\n"
+            "                           program the run compiled, with its defines)\n"
             "  --warmup N               untimed frames before --bench timing (default 3)\n"
             "  --gl-debug               report GL debug messages; any GL error fails the run\n"
             "  --resize-cycle N         after the first frame, resize N times and back; fail if GL\n"
@@ -128,5 +130,9 @@ void cli_print_help(const cli_desc *desc, FILE *stream)
             "  --quiet                  no progress lines (written while frames take more than 2 s)\n",
             desc->default_cutoff);
     keys_print_help(stream, desc->program, desc->views != NULL);
+    fprintf(stream, "\nshaders: built for the scene's features, so a scene pays only for what it uses: the light\n"
+                    "kinds (point, spot), the material models (blinn-phong, metallic-roughness), the material\n"
+                    "images (maps) and emissive; a chapter's shadows, occlusion and probes only while they are\n"
+                    "on (common/gl/shader_features.h; --bench's 'features=' names a run's)\n");
     fprintf(stream, "\nexit codes: 0 ok, 1 runtime failure, 2 usage or input error, 77 no GL context\n");
 }
