@@ -60,6 +60,7 @@ vec3 light_visible(vec3 c, int i, vec3 light_position, vec3 p, vec3 n)
 }
 
 // ---- the ambient light ----
+// fragment only: AMBIENT_OCCLUSION
 #ifdef AMBIENT_OCCLUSION
 #include "ambient_occlusion.glsl"
 #endif
