@@ -1,7 +1,10 @@
 // gbuffer_read.glsl - decodes one G-buffer pixel, whatever its layout (common/render/gbuffer.h).
-// The uniforms are set by gbuffer_bind_textures(); include after "shading.glsl" or alone.
+// The uniforms are set by gbuffer_bind_textures(); include after "shading.glsl" or alone. Built for a
+// scene without images, metallic-roughness or emissive materials (scene_features.glsl), the decoding
+// leaves out what those store: the occlusion, chapter 18's roughness, RT2.
 #ifndef GBUFFER_READ_GLSL
 #define GBUFFER_READ_GLSL
+#include "scene_features.glsl"
 #include "octahedral.glsl"
 
 // GBUFFER_MULTISAMPLE (chapter 13): the targets are multisampled; texelFetch's last argument is
@@ -78,7 +81,9 @@ surface gbuffer_decode(vec4 albedo, vec4 nm, float depth, vec3 position)
     s.occlusion = 1.0;
     s.emissive = vec3(0.0);
     if (u_gbuffer_normal_encoding == SHADER_GBUFFER_NORMAL_HALF) {
-        s.occlusion = albedo.a;
+#ifdef MATERIAL_MAPS
+        s.occlusion = albedo.a; // 1 but under an occlusion map
+#endif
         s.normal = octahedral_decode(nm.xy);
         s.specular = nm.z;
         s.shininess = nm.w;
@@ -92,17 +97,23 @@ surface gbuffer_decode(vec4 albedo, vec4 nm, float depth, vec3 position)
         s.normal = octahedral_decode_codes(gbuffer_codes(nm.xy, 65535.0), 32767.0);
     s.specular = albedo.a;
     s.shininess = 1.0 + 255.0 * nm.w; // gbuffer.frag's shininess_store
+#ifdef MATERIAL_PBR
     if (u_gbuffer_normal_encoding == SHADER_GBUFFER_NORMAL_SHORTS && nm.z > 0.25) { // metallic-roughness
         s.occlusion = nm.z * 2.0 - 1.0;
         s.shininess = -1.0 - floor(nm.w * 1024.0 + 0.5) / 1024.0;
     }
+#endif
     return s;
 }
 
 // RT2's emissive where the G-buffer has it; 0 where the scene has none (no RT2 is made then).
 vec3 gbuffer_emissive(ivec2 pixel, int sample_index)
 {
+#ifdef MATERIAL_EMISSIVE
     return u_gbuffer_has_emissive ? texelFetch(u_gbuffer_emissive, pixel, sample_index).rgb : vec3(0.0);
+#else
+    return vec3(0.0);
+#endif
 }
 
 // The surface at a pixel whose depth the caller has already read (and its position computed).
