@@ -16,6 +16,8 @@
 #                   (scripts/shadow-table.sh), and the issue's targets met or missed
 #   shadows.md      chapter 14 against exact shadow rays (the hard.shadow_reference_* tests' tables)
 #                   and the teapots' shadow pass with and without the culling (scripts/shadow-error.sh)
+#   features.md     what each feature costs, off against chapter 11 and on against the same frame
+#                   without it (scripts/feature-table.sh at 800x800: about a quarter of an hour)
 #   storage/        build/bin/bench --storage only at 320x240: what to store per pixel (docs/16):
 #                   bench_storage.md and .csv (a part run alone writes no bench.md);
 #                   that part alone (about 7 minutes): scripts/update-docs.sh --storage-only
@@ -26,7 +28,8 @@
 # Each file starts with the same stamp (date, CPU, cores, GL renderer, commit, clock). The pages
 # embed sections of these files verbatim between <!-- generated: FILE#SECTION --> markers, and
 # tests/lessons/doc_generated.py fails when a page's copy differs from the file (--update refreshes them).
-# Takes about 50 minutes on 2 cores with llvmpipe (51 for the run of 2026-12-02 18:29); --quick (a few minutes) is for trying the script.
+# Takes about 50 minutes on 2 cores with llvmpipe (51 for the run of 2026-12-02 18:29, before features.md
+# was part of it: count a quarter of an hour more); --quick (a few minutes) is for trying the script.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -281,6 +284,16 @@ echo "wrote $data/shadow-bench.md"
 } >"$data/shadows.md.tmp"
 mv "$data/shadows.md.tmp" "$data/shadows.md"
 echo "wrote $data/shadows.md"
+
+# What each feature costs (scripts/feature-table.sh), for docs/compare.md's "What each feature costs".
+feature_size=800x800 feature_frames=5
+$quick && feature_size=96x96 feature_frames=1
+{
+  printf '# What each feature costs\n\n%s\n\n' "$stamp"
+  scripts/feature-table.sh build/bin "$feature_size" "$feature_frames"
+} >"$data/features.md.tmp"
+mv "$data/features.md.tmp" "$data/features.md"
+echo "wrote $data/features.md"
 
 storage_table
 
