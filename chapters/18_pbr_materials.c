@@ -142,10 +142,11 @@ static bool draw_forward_exposed(app *a, const char *renderer, GLuint target, ap
 
 static bool draw_forward_compared(app *a, GLuint target) { return draw_forward_exposed(a, "forward", target, NULL); }
 
-/* R: forward or Forward+, at the exposure; an embedding caller's linear radiance has none. */
+/* R: forward or Forward+, at the exposure; an embedding caller's linear radiance has none, and at
+ * exposure 1 the present pass would change nothing: forward draws the picture itself, as in chapter 11. */
 static bool frame_forward(app *a)
 {
-    if (a->linear_output)
+    if (a->linear_output || state.exposure == 1.0f)
         return app_render_forward(a);
     app_forward_work work = {.shaded = -1, .lights_per_pixel = 1.0};
     bool ok = draw_forward_exposed(a, a->cli->renderers[a->renderer], a->target.id, &work);
@@ -203,7 +204,16 @@ static bool frame(app *a)
     if (!app_view_is(a, "lit"))
         return draw_channel(a);
 
-    /* 2. light assignment and 3. the lighting pass, in linear radiance (chapter 11's, unchanged) */
+    /* 2. light assignment and 3. the lighting pass (chapter 11's, unchanged); at exposure 1 straight
+     * into the picture, display-encoded, as chapter 11 draws it (the present pass would only copy it) */
+    if (state.exposure == 1.0f && !a->linear_output) {
+        glBindFramebuffer(GL_FRAMEBUFFER, a->target.id);
+        glViewport(0, 0, a->width, a->height);
+        bool ok = chapter_11_assign(&state.c, &a->gs) &&
+                  chapter_11_shade_deferred(&state.c, &state.g, &a->gs, &deferred_pass, CLUSTERS_VIEW_LIT);
+        gl_pass_state_reset();
+        return ok;
+    }
     const fbo_desc linear = {.color_formats = {GL_RGBA32F}, .color_count = 1, .name = "linear radiance"};
     if (!fit_target(&state.linear, &linear, a) || !chapter_11_assign(&state.c, &a->gs))
         return false;
