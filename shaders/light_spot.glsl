@@ -1,16 +1,9 @@
 // light_spot.glsl - chapter 09's spot light (docs/09_spot_lights.md): a point light inside a cone.
-// Included through light_kinds.glsl in programs built for a scene with spots (LIGHT_SPOT).
+// Included through light_kinds.glsl, after its light_cone, in programs built for a scene with spots
+// (LIGHT_SPOT).
 
-// A spot's cone: its unit axis and the cosines of its half-angles. A point light is a spot without
-// one (direction 0, both cosines -1): spot_factor() is 1 for it everywhere.
-struct light_cone {
-    vec3 direction;
-    float cos_outer;
-    float cos_inner;
-};
-
-const light_cone NO_CONE = light_cone(vec3(0.0), -1.0, -1.0);
-
+// A spot's cone (light_kinds.glsl's light_cone) from its texels. A point light is a spot without one
+// (NO_CONE: direction 0, both cosines -1): spot_factor() is 1 for it everywhere.
 light_cone light_fetch_cone(int i)
 {
     int t = SHADER_LIGHT_TEXELS * i;
