@@ -45,7 +45,15 @@ float shadow_visibility(int i, vec3 light_position, vec3 p, vec3 n)
     vec2 st = (ndc.xy * 0.5 + 0.5) * tile.z;
     float ref = min(ndc.z * 0.5 + 0.5, 1.0);
     vec2 atlas = vec2(textureSize(u_shadow_atlas, 0));
-    int r = int(info.w) / 2;
+#if defined(SHADOW_PCF) && SHADOW_PCF == 1
+    // PCF 1 (the default), known when the program is built: one comparison, no loop
+    return texture(u_shadow_atlas, vec3((tile.xy + clamp(st, vec2(1.0), vec2(tile.z - 1.0))) / atlas, ref));
+#else
+#ifdef SHADOW_PCF
+    const int r = SHADOW_PCF / 2; // the loop's bounds known when the program is built
+#else
+    int r = int(info.w) / 2; // a program built without it reads the light's table
+#endif
     float lit = 0.0;
     for (int y = -r; y <= r; y++)
         for (int x = -r; x <= r; x++) {
@@ -53,5 +61,6 @@ float shadow_visibility(int i, vec3 light_position, vec3 p, vec3 n)
             lit += texture(u_shadow_atlas, vec3((tile.xy + s) / atlas, ref));
         }
     return lit / float((2 * r + 1) * (2 * r + 1));
+#endif
 }
 #endif

@@ -8,6 +8,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -33,6 +34,7 @@ bool shadow_atlas_create(shadow_atlas *s, const shadow_plan_desc *desc, GLenum f
 {
     memset(s, 0, sizeof *s);
     s->format = format, s->slope_bias = slope_bias, s->enabled = true;
+    snprintf(s->defines, sizeof s->defines, "SHADOWS 1\nSHADOW_PCF %d", desc->pcf);
     const fbo_desc atlas = {.depth_format = format, .name = "shadow atlas"};
     if (!shadow_plan_create(&s->plan, desc) || !fbo_create(&s->target, &atlas, desc->atlas_size, desc->atlas_size))
         return false;
@@ -186,5 +188,5 @@ void shadow_atlas_bind(GLuint program, const void *user)
 
 gl_program_extra shadow_atlas_extra(const shadow_atlas *s)
 {
-    return (gl_program_extra){.defines = "SHADOWS 1", .bind = shadow_atlas_bind, .user = s};
+    return (gl_program_extra){.defines = s->defines, .bind = shadow_atlas_bind, .user = s};
 }

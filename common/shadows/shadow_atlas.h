@@ -17,7 +17,9 @@
  *                                   the samplers of `program` (in use) set to them: the bind of the
  *                                   gl_program_extra that chapters 14 to 19 hand to forward and the clusters
  *   shadow_atlas_bytes(s)           the atlas's memory
- *   shadow_atlas_extra(s)           that gl_program_extra: "SHADOWS 1" and shadow_atlas_bind
+ *   shadow_atlas_extra(s)           that gl_program_extra: "SHADOWS 1", SHADOW_PCF (the taps a side, so
+ *                                   the lookup's loop is known when the program is built: one tap
+ *                                   for PCF 1) and shadow_atlas_bind
  */
 #ifndef COMMON_SHADOW_ATLAS_H
 #define COMMON_SHADOW_ATLAS_H
@@ -33,6 +35,7 @@ typedef struct shadow_atlas {
     GLenum format;
     float slope_bias;
     bool enabled;
+    char defines[40]; /* shadow_atlas_extra's: SHADOWS and SHADOW_PCF */
     GLuint depth_program;
     GLuint light_buffer, light_texture, tile_buffer, tile_texture;
     float *light_texels, *tile_texels;
