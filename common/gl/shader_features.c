@@ -14,8 +14,8 @@ static void add_material(shader_features *f, const scene *s, const scene_materia
         f->pbr = true;
         for (int k = 0; k < SCENE_MAP_COUNT; k++)
             f->maps[k] = f->maps[k] || (m->maps[k] >= 0 && m->maps[k] < s->texture_count);
-        f->emissive = f->emissive || m->emissive[0] > 0.0f || m->emissive[1] > 0.0f || m->emissive[2] > 0.0f ||
-                      m->maps[SCENE_MAP_EMISSIVE] >= 0;
+        f->emissive = f->emissive || m->emissive[0] > 0.0f || m->emissive[1] > 0.0f ||
+                      m->emissive[2] > 0.0f || m->maps[SCENE_MAP_EMISSIVE] >= 0;
     }
     f->glass = f->glass || m->opacity < 1.0f;
 }

@@ -21,11 +21,11 @@
 #include <stddef.h>
 
 typedef struct shader_features {
-    bool point, spot;            /* light kinds present (LIGHT_POINT, LIGHT_SPOT) */
-    bool blinn_phong, pbr;       /* material models present (MATERIAL_BLINN_PHONG, MATERIAL_PBR) */
-    bool maps[SCENE_MAP_COUNT];  /* which images some material samples (MATERIAL_MAPS: any of them) */
-    bool emissive;               /* some material gives off light (MATERIAL_EMISSIVE) */
-    bool glass;                  /* some object is see-through (chapter 12 draws it; no define) */
+    bool point, spot;           /* light kinds present (LIGHT_POINT, LIGHT_SPOT) */
+    bool blinn_phong, pbr;      /* material models present (MATERIAL_BLINN_PHONG, MATERIAL_PBR) */
+    bool maps[SCENE_MAP_COUNT]; /* which images some material samples (MATERIAL_MAPS: any of them) */
+    bool emissive;              /* some material gives off light (MATERIAL_EMISSIVE) */
+    bool glass;                 /* some object is see-through (chapter 12 draws it; no define) */
 } shader_features;
 
 shader_features shader_features_of(const scene *s);

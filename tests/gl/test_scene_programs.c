@@ -63,7 +63,8 @@ static int chapter_map_samplers(const app_desc *c, const gpu_scene *gs, char *wh
 
 static bool load(const char *path, scene *s, gpu_scene *gs)
 {
-    return hard_expect(scene_load(path, s) && gpu_scene_create(s, gs) && gpu_scene_update(gs, 0.0f, 5.0 / 256.0, W, H),
+    return hard_expect(scene_load(path, s) && gpu_scene_create(s, gs) &&
+                           gpu_scene_update(gs, 0.0f, 5.0 / 256.0, W, H),
                        "load %s", path);
 }
 
@@ -81,8 +82,8 @@ int main(int argc, char **argv)
         for (size_t i = 0; i < sizeof chapters / sizeof *chapters; i++) {
             char where[256] = "";
             int n = chapter_map_samplers(chapters[i], &gs, where, sizeof where);
-            hard_expect(n == 0, "%s on %s: %d material-image sampler(s) in its programs%s%s", chapters[i]->cli->program,
-                        argv[1], n, n ? ", first " : "", where);
+            hard_expect(n == 0, "%s on %s: %d material-image sampler(s) in its programs%s%s",
+                        chapters[i]->cli->program, argv[1], n, n ? ", first " : "", where);
         }
         const app_desc *c = &chapter_11;
         app_embed *e = NULL;
@@ -99,8 +100,8 @@ int main(int argc, char **argv)
     if (load(argv[2], &s, &gs)) {
         char where[256] = "";
         int n = chapter_map_samplers(&chapter_18, &gs, where, sizeof where);
-        hard_expect(n > 0, "chapter 18 on %s: %d material-image sampler(s) (first %s): the check sees them", argv[2],
-                    n, where);
+        hard_expect(n > 0, "chapter 18 on %s: %d material-image sampler(s) (first %s): the check sees them",
+                    argv[2], n, where);
         gpu_scene_destroy(&gs);
         scene_destroy(&s);
     }
