@@ -284,7 +284,11 @@ static bool key(app *a, int k)
 
 static void cleanup(app *a)
 {
-    (void)a;
+    /* --verbose: the last frame's batches, and its draws: the ambient, two per batch, one full-screen */
+    int fullscreen = a->gs.light_count - state.dv.lv.finite_count;
+    if (app_renderer_is(a, "deferred"))
+        log_debug("stencil: %d batches for %d lights (%d full-screen): %d draws", state.lb.count,
+                  a->gs.light_count, fullscreen, 1 + 2 * state.lb.count + (fullscreen > 0));
     for (int i = 0; i < state.queries_made; i++)
         gl_query_destroy(&state.queries[i]);
     free(state.queries);

@@ -102,6 +102,20 @@ case $exercise in
     d=$(awk '$1 == "camera" { ex = $3; ey = $4; ez = $5 } $1 == "light" { if (n++ == 4) { lx = $3; ly = $4; lz = $5 } }
         END { printf "%.2f", sqrt((ex - lx) ^ 2 + (ey - ly) ^ 2 + (ez - lz) ^ 2) }' "$A/default.scene")
     equal "the camera's distance to light 4" "$d" 6.31 ;;
+08.4) # the draws with batches and without, and the batch counts of "The batches" (one frame each, --verbose)
+    said "\`stencil: 120 batches for 1024 lights (0 full-screen): 241 draws\` with batches"
+    said "\`stencil: 1024 batches for 1024 lights (0 full-screen): 2049 draws\` with \`--batch off\`"
+    said "42 batches for 64 lights, 69 for 256, 120 for 1,024 (241 draws instead of 2,049, the ambient's included), 327 for 4,096; 65 for the city's 757"
+    once=(--headless --size 800x800 --frames 1 --verbose)
+    for n in 64:42:85 256:69:139 1024:120:241 4096:327:655; do
+        IFS=: read -r lights batches draws <<<"$n"
+        run "lights_$lights" 08_stencil_volumes "${once[@]}" --lights "$lights"
+        printed "lights_$lights" "stencil: $batches batches for $lights lights (0 full-screen): $draws draws"
+    done
+    run batch_off 08_stencil_volumes "${once[@]}" --lights 1024 --batch off
+    printed batch_off "stencil: 1024 batches for 1024 lights (0 full-screen): 2049 draws"
+    run city 08_stencil_volumes "${once[@]}" --scene "$A/city.scene"
+    printed city "stencil: 65 batches for 757 lights (0 full-screen): 131 draws" ;;
 10.6) # the two paths on the city: the same evaluations, different passes
     said "both print \`shaded_pixels=8450764\`"
     for path in compute:tile_culling_ms cpu:tile_depth_bounds_ms; do
