@@ -74,6 +74,26 @@ case $exercise in
     near "the default against chapter 00, pixels beyond 1/255" "$(over "$out/forward.png" "$out/default.png")" 63
     near "compact-d24s8 against chapter 00" "$(over "$out/forward.png" "$out/d24s8.png")" 70
     near "the two layouts" "$(over "$out/default.png" "$out/d24s8.png")" 78 ;;
+02.3) # the reference layout's normal at full float precision: 1/255 here and there (on a copy of the shaders)
+    said "203 pixels move, each by 1/255"
+    said "against chapter 00 no pixel is beyond 1/255 either way (max 1 before and after"
+    mkdir -p "$out/data"
+    data=${COURSE_DATA_DIR:-$src} # the shaders the chapter would read
+    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    frag=$out/data/shaders/gbuffer.frag
+    grep -q 'vec4(octahedral_encode_half(n), specular' "$frag" || { echo "FAIL: gbuffer.frag has no octahedral_encode_half to replace"; exit 1; }
+    sed -i 's/vec4(octahedral_encode_half(n), specular/vec4(octahedral_encode(n), specular/' "$frag"
+    small=(--headless --size 320x240 --frames 1)
+    run forward 00_forward "${small[@]}" --screenshot "$out/forward.png"
+    run half 03_fullscreen_phong "${small[@]}" --gbuffer reference --screenshot "$out/half.png"
+    run float 03_fullscreen_phong "${small[@]}" --gbuffer reference --data-dir "$out/data" --screenshot "$out/float.png"
+    near "pixels beyond 0/255 between the two" \
+        "$("$bin/imgdiff" --tolerance 0 "$out/half.png" "$out/float.png" 2>&1 | sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 203
+    for p in half float; do
+        equal "$p against chapter 00, pixels beyond 1/255" "$(over "$out/forward.png" "$out/$p.png")" 0
+        equal "$p against chapter 00, max" "$("$bin/imgdiff" "$out/forward.png" "$out/$p.png" 2>&1 |
+            sed -n 's/.*max=\([0-9]*\) .*/\1/p')" 1
+    done ;;
 04.1) # the lighting fragments at radius 2, 3 and 8 (the pictures: golden.04_light_volumes_radius2, _radius8)
     said "34,518 at radius 2, 76,988 at the default 3, 326,385 at 8"
     for r in 2:34518 3:76988 8:326385; do
