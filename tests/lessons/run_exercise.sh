@@ -180,6 +180,25 @@ case $exercise in
     run cull_off 14_shadows "${teapots[@]}" --shadow-cull off
     printed cull_off "cull=off "
     printed cull_off " triangles=140821440 " ;;
+16.4) # the maps' gradients set to zero: level 0 everywhere (on a copy of the shaders)
+    said "42 pixels beyond 1/255 against forward (up to 13/255) before, 20,587 (26.8 %) after, up to 211/255"
+    mkdir -p "$out/data"
+    data=${COURSE_DATA_DIR:-$src} # the shaders the chapter would read
+    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    frag=$out/data/shaders/visibility_shade.frag
+    [ "$(grep -cE '^        g_map_d[xy] = uvs \* \(w[xy] - wc\);$' "$frag")" = 2 ] ||
+        { echo "FAIL: visibility_shade.frag does not set g_map_dx and g_map_dy as the page says"; exit 1; }
+    sed -i -E 's/^        (g_map_d[xy]) = uvs \* \(w[xy] - wc\);$/        \1 = vec2(0.0);/' "$frag"
+    teapots=(--headless --size 320x240 --frames 1 --scene "$A/pbr_teapots.scene" --anisotropy 1)
+    run forward 00_forward "${teapots[@]}" --screenshot "$out/forward.png"
+    run kept 16_visibility_buffer "${teapots[@]}" --screenshot "$out/kept.png"
+    run zero 16_visibility_buffer "${teapots[@]}" --data-dir "$out/data" --screenshot "$out/zero.png"
+    for pw in kept:42:13 zero:20587:211; do
+        IFS=: read -r p pixels max <<<"$pw"
+        near "$p against forward, pixels beyond 1/255" "$(over "$out/forward.png" "$out/$p.png")" "$pixels"
+        near "$p against forward, max" "$("$bin/imgdiff" "$out/forward.png" "$out/$p.png" 2>&1 |
+            sed -n 's/.*max=\([0-9]*\) .*/\1/p')" "$max"
+    done ;;
 06.exactness) # not an exercise: the table "How exact is RGBA16F?", each --accum against chapter 00
     said "| default | max 1/255, 0 % over 1 | max 1, 0 % | max 8, 10.9 % over 1 |"
     said "| overlap (sum > 1) | **max 2**, 0.43 % over 1 | max 1, 0 % | max 8, 26.2 % over 1 |"
