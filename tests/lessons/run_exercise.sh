@@ -199,6 +199,15 @@ case $exercise in
         near "$p against forward, max" "$("$bin/imgdiff" "$out/forward.png" "$out/$p.png" 2>&1 |
             sed -n 's/.*max=\([0-9]*\) .*/\1/p')" "$max"
     done ;;
+16.7) # the visibility pass cut down on the bunnies, at 1 and 4 samples: the pixels each mode shades
+    said "(\`shaded_pixels=51457\` at 1 sample, \`53976\` at 4) and \`depth-only\` none (\`shaded_pixels=0\`)"
+    bunnies=(--headless --size 400x400 --frames 1 --warmup 0 --bench --scene "$A/bunnies.scene")
+    for s in 1:51457 4:53976; do
+        for mode in full:${s#*:} no-primitive-id:${s#*:} depth-only:0; do
+            run "${mode%:*}_${s%:*}" 16_visibility_buffer "${bunnies[@]}" --samples "${s%:*}" --vis-pass "${mode%:*}"
+            printed "${mode%:*}_${s%:*}" "shaded_pixels=${mode#*:} "
+        done
+    done ;;
 06.exactness) # not an exercise: the table "How exact is RGBA16F?", each --accum against chapter 00
     said "| default | max 1/255, 0 % over 1 | max 1, 0 % | max 8, 10.9 % over 1 |"
     said "| overlap (sum > 1) | **max 2**, 0.43 % over 1 | max 1, 0 % | max 8, 26.2 % over 1 |"
