@@ -298,6 +298,23 @@ case $exercise in
     equal "pixels beyond 0/255 against the golden" \
         "$("$bin/imgdiff" --tolerance 0 "$src/tests/golden/07_face_culling.png" "$out/gequal.png" 2>&1 |
            sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0 ;;
+01.2) # the framebuffer broken on purpose, twice (on copies of the chapter)
+    patched_chapter zero_width 01_fbo_setup "GL_RGBA8, width, height, 0," "s/GL_RGBA8, width, height, 0,/GL_RGBA8, 0, height, 0,/"
+    patched_chapter depth_as_colour 01_fbo_setup "    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, state.depth);" "/^    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, state.depth);\$/a\\    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, state.depth);"
+    said "both runs exit with status 1, draw nothing and print \`offscreen framebuffer 320x240: GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT\`"
+    for broken in zero_width depth_as_colour; do
+        (cd "$src" && "$out/bin/$broken" --headless --size 320x240 --frames 1 --screenshot "$out/$broken.png") \
+            >"$out/$broken.log" 2>&1
+        rc=$?
+        [ "$rc" -eq 77 ] && { echo "skip: no GL context"; exit 77; }
+        equal "$broken's exit status" "$rc" 1
+        printed "$broken" "offscreen framebuffer 320x240: GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT"
+        [ ! -e "$out/$broken.png" ] && echo "ok   $broken drew nothing" || { echo "FAIL $broken wrote a picture"; fail=1; }
+    done
+    run put_back 01_fbo_setup --headless --size 320x240 --frames 1 --screenshot "$out/put_back.png"
+    equal "pixels beyond 0/255 against the golden, put back" \
+        "$("$bin/imgdiff" --tolerance 0 "$src/tests/golden/01_fbo_setup.png" "$out/put_back.png" 2>&1 |
+           sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0 ;;
 03.3) # the background shaded too: the same picture, every pixel counted (on a copy of the shaders)
     said "\`shaded_pixels\` goes from 43,125 to 76,800, every pixel"
     mkdir -p "$out/data"
