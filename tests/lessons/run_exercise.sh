@@ -315,6 +315,23 @@ case $exercise in
     equal "pixels beyond 0/255 against the golden, put back" \
         "$("$bin/imgdiff" --tolerance 0 "$src/tests/golden/01_fbo_setup.png" "$out/put_back.png" 2>&1 |
            sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0 ;;
+13.3) # is_edge without its plane test, on the city at 800x800 against forward (on a copy of the shaders)
+    said "71 pixels beyond 1/255 (max 6/255, within \`13_vs_forward_msaa_city\`'s 0.015 %) before, 327 after (0.051 %, max 54/255)"
+    said "253 pixels between the two deferred pictures"
+    mkdir -p "$out/data"
+    data=${COURSE_DATA_DIR:-$src}
+    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    frag=$out/data/shaders/msaa_deferred.frag
+    grep -q '^        if (abs(dot(sample_point(p, s) - p0, n)) > tolerance)$' "$frag" ||
+        { echo "FAIL: msaa_deferred.frag's is_edge has no plane test to drop"; exit 1; }
+    sed -i '/^    vec3 n = gbuffer_read_sample(p, 0, vec3(0.0)).normal, p0 = sample_point(p, 0);$/,/^            return true;$/d' "$frag"
+    city=(--headless --size 800x800 --frames 1 --scene "$A/city.scene")
+    run forward 13_msaa "${city[@]}" --renderer forward --screenshot "$out/forward.png"
+    run kept 13_msaa "${city[@]}" --screenshot "$out/kept.png"
+    run dropped 13_msaa "${city[@]}" --data-dir "$out/data" --screenshot "$out/dropped.png"
+    near "with the plane test against forward, pixels beyond 1/255" "$(over "$out/forward.png" "$out/kept.png")" 71
+    near "without it" "$(over "$out/forward.png" "$out/dropped.png")" 327
+    near "the two deferred pictures" "$(over "$out/kept.png" "$out/dropped.png")" 253 ;;
 03.3) # the background shaded too: the same picture, every pixel counted (on a copy of the shaders)
     said "\`shaded_pixels\` goes from 43,125 to 76,800, every pixel"
     mkdir -p "$out/data"
