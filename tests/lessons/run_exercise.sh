@@ -52,8 +52,10 @@ bench=(--headless --frames 1 --warmup 0 --bench)
 # with sed, compiled with the flags CMake gave the chapter and linked with its link line, its own
 # object replaced (the libraries are the ones already built). The binary is OUT_DIR/bin/NAME, which
 # run NAME then starts in place of BIN_DIR/CHAPTER.
-patched_chapter() { # NAME CHAPTER 'FIXED TEXT' SED_SCRIPT: the text must be there before the patch
-    local name=$1 chapter=$2 before=$3 script=$4
+# A header the chapter includes may be patched the same way (HEADER: its path in the course, found
+# first on the include path); only the chapter sees the change, not the libraries built before it.
+patched_chapter() { # NAME CHAPTER 'FIXED TEXT' SED_SCRIPT [HEADER HEADER_SED_SCRIPT]: the text must be there
+    local name=$1 chapter=$2 before=$3 script=$4 header=${5:-} header_script=${6:-}
     local build=$bin/.. dir=CMakeFiles/$chapter.dir
     [ -f "$build/$dir/flags.make" ] && [ -f "$build/$dir/link.txt" ] ||
         { echo "FAIL: no $dir/flags.make or link.txt under $build"; exit 1; }
@@ -62,15 +64,24 @@ patched_chapter() { # NAME CHAPTER 'FIXED TEXT' SED_SCRIPT: the text must be the
     cp "$src/chapters/$chapter.c" "$copy" || exit 1
     grep -qF -- "$before" "$copy" || { echo "FAIL: chapters/$chapter.c no longer has: $before"; exit 1; }
     sed -i "$script" "$copy"
-    if cmp -s "$src/chapters/$chapter.c" "$copy"; then echo "FAIL: the patch changed nothing"; exit 1; fi
+    if [ -z "$header" ] && cmp -s "$src/chapters/$chapter.c" "$copy"; then echo "FAIL: the patch changed nothing"; exit 1; fi
     diff -u "$src/chapters/$chapter.c" "$copy" | sed -n '3,$p' | sed 's/^/     /'
+    local first=""
+    if [ -n "$header" ]; then
+        first=$out/patched/$name.include
+        mkdir -p "$first" && cp "$src/$header" "$first/" || exit 1
+        sed -i "$header_script" "$first/${header##*/}"
+        if cmp -s "$src/$header" "$first/${header##*/}"; then echo "FAIL: the patch changed nothing in $header"; exit 1; fi
+        diff -u "$src/$header" "$first/${header##*/}" | sed -n '3,$p' | sed 's/^/     /'
+        first="-I$first"
+    fi
     local cc defines includes flags
     cc=$(sed -n 's/^# compile C with //p' "$build/$dir/flags.make")
     defines=$(sed -n 's/^C_DEFINES = //p' "$build/$dir/flags.make")
     includes=$(sed -n 's/^C_INCLUDES = //p' "$build/$dir/flags.make")
     flags=$(sed -n 's/^C_FLAGS = //p' "$build/$dir/flags.make")
     # shellcheck disable=SC2086 # the flags are CMake's words, one per option
-    (cd "$build" && "${cc:-cc}" $defines $includes $flags -c "$copy" -o "$out/patched/$name.o") ||
+    (cd "$build" && "${cc:-cc}" $defines $first $includes $flags -c "$copy" -o "$out/patched/$name.o") ||
         { echo "FAIL: the patched chapters/$chapter.c does not compile"; exit 1; }
     local link
     link=$(sed -e "s| $dir/chapters/$chapter\.c\.o | $out/patched/$name.o |" \
@@ -332,6 +343,26 @@ case $exercise in
     near "with the plane test against forward, pixels beyond 1/255" "$(over "$out/forward.png" "$out/kept.png")" 71
     near "without it" "$(over "$out/forward.png" "$out/dropped.png")" 327
     near "the two deferred pictures" "$(over "$out/kept.png" "$out/dropped.png")" 253 ;;
+16.3) # 15 bits of triangle, 17 of object: the scenes refused (the chapter built with the header changed)
+    patched_chapter bits15 16_visibility_buffer "SHADER_VIS_TRIANGLE_BITS" "" \
+        common/base/shader_layout.h "s/X(VIS_TRIANGLE_BITS, 20)/X(VIS_TRIANGLE_BITS, 15)/"
+    said "four scenes, each exiting with status 2"
+    said "\`bunnies.scene: mesh 'bunny' has 58784 triangles; the visibility buffer's ids hold at most 32768 a mesh (15 bits of triangle)\`"
+    said "\`pbr_teapots\`, \`teapots\` and \`teapots_probes\` the same for their mesh 'teapot' of 36672 triangles"
+    said "\`city\`, \`default\`, \`glass\`, \`sphere\` and \`spots\` are still taken"
+    for scene in bunnies:bunny:58784 pbr_teapots:teapot:36672 teapots:teapot:36672 teapots_probes:teapot:36672; do
+        IFS=: read -r file mesh triangles <<<"$scene"
+        (cd "$src" && "$out/bin/bits15" --headless --size 64x48 --frames 1 --scene "$A/$file.scene") >"$out/$file.log" 2>&1
+        rc=$?
+        [ "$rc" -eq 77 ] && { echo "skip: no GL context"; exit 77; }
+        equal "$file refused, exit status" "$rc" 2
+        printed "$file" "$file.scene: mesh '$mesh' has $triangles triangles; the visibility buffer's ids hold at most 32768 a mesh (15 bits of triangle)"
+    done
+    for file in city default glass sphere spots; do
+        run "$file" bits15 --headless --size 64x48 --frames 1 --scene "$A/$file.scene"
+        if grep -q "the visibility buffer's ids hold" "$out/$file.log"; then echo "FAIL $file refused"; fail=1; else
+            echo "ok   $file taken"; fi
+    done ;;
 03.3) # the background shaded too: the same picture, every pixel counted (on a copy of the shaders)
     said "\`shaded_pixels\` goes from 43,125 to 76,800, every pixel"
     mkdir -p "$out/data"
