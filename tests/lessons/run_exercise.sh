@@ -363,6 +363,43 @@ case $exercise in
         if grep -q "the visibility buffer's ids hold" "$out/$file.log"; then echo "FAIL $file refused"; fail=1; else
             echo "ok   $file taken"; fi
     done ;;
+02.5) # chapter 07 with reversed-z: its volume pass mirrored, the shader's background test, the guard let through
+    said "68 pixels of the city at 800×800 change (beyond 1/255), and against chapter 00 only 6 are left beyond 1/255 (max 30/255) instead of the default's 63"
+    said "the patched chapter draws the default layout's picture unchanged"
+    patched_chapter reversed 07_face_culling "    if (!deferred_volumes_render(&state.dv, &state.g, &a->gs, a->target.id, &f))" "$(cat <<'SED'
+/^    const deferred_volumes_frame f = {$/i\
+    gl_pass_state pass = state.pass; /* mirrored for a reversed-Z layout */\
+    gpu_scene mirrored;\
+    gbuffer_depth_test_begin(&state.g, &a->gs, &mirrored, &pass);
+s/^        \.volume_state = &state\.pass,$/        .volume_state = \&pass,/
+/^    if (!deferred_volumes_render(&state\.dv, &state\.g, &a->gs, a->target\.id, &f))$/{
+N
+s/.*/    bool drawn = deferred_volumes_render(\&state.dv, \&state.g, \&mirrored, a->target.id, \&f);\
+    gbuffer_depth_test_end(\&state.g);\
+    if (!drawn)\
+        return false;/
+}
+s/\.cleanup = cleanup, \.key = key};$/.cleanup = cleanup, .key = key,\
+                             .takes_reversed_z = true};/
+SED
+)"
+    mkdir -p "$out/data"
+    data=${COURSE_DATA_DIR:-$src}
+    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    frag=$out/data/shaders/light_volume.frag
+    grep -q '^    if (depth >= 1.0 || d > v_volume_radius) {$' "$frag" || { echo "FAIL: light_volume.frag has no depth >= 1.0"; exit 1; }
+    sed -i 's/^    if (depth >= 1.0 || d > v_volume_radius) {$/    if (gbuffer_is_background(depth) || d > v_volume_radius) {/' "$frag"
+    city=(--headless --size 800x800 --frames 1 --scene "$A/city.scene")
+    run forward 00_forward "${city[@]}" --screenshot "$out/forward.png"
+    run default 07_face_culling "${city[@]}" --screenshot "$out/default.png"
+    run reversed reversed "${city[@]}" --data-dir "$out/data" --gbuffer reversed-z --screenshot "$out/reversed.png"
+    run reversed_default reversed "${city[@]}" --data-dir "$out/data" --screenshot "$out/reversed_default.png"
+    near "the default layout against chapter 00, pixels beyond 1/255" "$(over "$out/forward.png" "$out/default.png")" 63
+    near "reversed-z against chapter 00" "$(over "$out/forward.png" "$out/reversed.png")" 6
+    near "the city pixels that change, default to reversed-z" "$(over "$out/default.png" "$out/reversed.png")" 68
+    equal "pixels the patch moves with the default layout (beyond 0/255)" \
+        "$("$bin/imgdiff" --tolerance 0 "$out/default.png" "$out/reversed_default.png" 2>&1 |
+           sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0 ;;
 03.3) # the background shaded too: the same picture, every pixel counted (on a copy of the shaders)
     said "\`shaded_pixels\` goes from 43,125 to 76,800, every pixel"
     mkdir -p "$out/data"
