@@ -309,6 +309,35 @@ case $exercise in
     equal "pixels beyond 0/255 against the golden" \
         "$("$bin/imgdiff" --tolerance 0 "$src/tests/golden/07_face_culling.png" "$out/gequal.png" 2>&1 |
            sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0 ;;
+07.3) # the stencil pass between the faces: chapter 08 is its answer, counted on the city
+    said "this chapter shades \`shaded_pixels=3958724\` and chapter 08 \`shaded_pixels=3116818\`, 21 % fewer"
+    run volumes 07_face_culling "${bench[@]}" --scene "$A/city.scene"
+    printed volumes "shaded_pixels=3958724 "
+    run stencil 08_stencil_volumes "${bench[@]}" --scene "$A/city.scene"
+    printed stencil "shaded_pixels=3116818 " ;;
+10.5) # TILE_SIZE 8 and 32 (on copies of the chapter): the lit picture the same, the tile views not
+    said "45.3 %, 39.2 % and 11.8 % of the pixels move beyond 1/255 at 8, and 57.9 %, 47.5 % and 8.7 % at 32"
+    declare -A moved=([8]="45.3 39.2 11.8" [32]="57.9 47.5 8.7") # the page's, to 0.1 %
+    for ts in 8 32; do
+        patched_chapter "tile$ts" 10_tiled_deferred "enum { TILE_SIZE = 16, VIEW_TILES = 3 };" \
+            "s/TILE_SIZE = 16,/TILE_SIZE = $ts,/; s/TILE_SIZE 16\\\\n/TILE_SIZE $ts\\\\n/"
+        run "lit_$ts" "tile$ts" --headless --size 320x240 --frames 1 --screenshot "$out/lit_$ts.png"
+        equal "TILE_SIZE $ts: lit pixels beyond 0/255 against the golden" \
+            "$("$bin/imgdiff" --tolerance 0 "$src/tests/golden/10_tiled_deferred.png" "$out/lit_$ts.png" 2>&1 |
+               sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0
+        read -r -a want <<<"${moved[$ts]}"
+        k=0
+        for view in "tiles|--lights 256 --view tiles" "overdraw|--lights 256 --view overdraw" \
+                    "crowd_tiles|--scene $src/tests/scenes/tile_crowd.scene --view tiles"; do
+            read -r -a args <<<"${view#*|}"
+            run "${view%%|*}_$ts" "tile$ts" --headless --size 320x240 --frames 1 "${args[@]}" \
+                --screenshot "$out/${view%%|*}_$ts.png"
+            equal "TILE_SIZE $ts: ${view%%|*}'s pixels beyond 1/255 against its golden (%)" \
+                "$("$bin/imgdiff" --tolerance 1 "$src/tests/golden/10_tiled_deferred_${view%%|*}.png" \
+                   "$out/${view%%|*}_$ts.png" 2>&1 | sed -n 's/.* (\([0-9.]*\) %).*/\1/p' | awk '{ printf "%.1f", $1 }')" "${want[$k]}"
+            k=$((k + 1))
+        done
+    done ;;
 01.2) # the framebuffer broken on purpose, twice (on copies of the chapter)
     patched_chapter zero_width 01_fbo_setup "GL_RGBA8, width, height, 0," "s/GL_RGBA8, width, height, 0,/GL_RGBA8, 0, height, 0,/"
     patched_chapter depth_as_colour 01_fbo_setup "    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, state.depth);" "/^    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, state.depth);\$/a\\    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, state.depth);"
