@@ -324,6 +324,17 @@ case $exercise in
             else echo "FAIL $frame, ${layout%:*}: max, mean, over 1/255: $got, the page says 1 ${layout#*:} 0"; fail=1; fi
         done
     done ;;
+06.2) # GL_R11F_G11F_B10F as a fourth --accum (on a copy of the chapter), the default scene against chapter 00
+    said "40,229 pixels (52.4 %) beyond 1/255, up to 11/255"
+    patched_chapter r11f 06_additive_blending 'static const GLenum accum_formats[] = {GL_RGBA16F, GL_RGBA8, GL_RGBA32F};' \
+        's/"rgba32f", NULL};/"rgba32f", "r11f_g11f_b10f", NULL};/; s/GL_RGBA8, GL_RGBA32F};/GL_RGBA8, GL_RGBA32F, GL_R11F_G11F_B10F};/'
+    frame=(--headless --size 320x240 --frames 1)
+    run forward 00_forward "${frame[@]}" --screenshot "$out/forward.png"
+    run r11f r11f "${frame[@]}" --accum r11f_g11f_b10f --screenshot "$out/r11f.png"
+    line=$("$bin/imgdiff" "$out/forward.png" "$out/r11f.png" 2>&1 | grep "imgdiff:")
+    echo "     $line"
+    equal "R11F_G11F_B10F against chapter 00: max" "$(sed -n 's/.*max=\([0-9]*\) .*/\1/p' <<<"$line")" 11
+    near "pixels beyond 1/255" "$(sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p' <<<"$line")" 40229 ;;
 07.2) # the volume pass's depth test GL_GEQUAL: the background's pixels shaded too (on a copy of the chapter)
     patched_chapter gequal 07_face_culling "    .depth_func = GL_GREATER," "/^static const gl_pass_state volume_pass = {\$/,/^};\$/ s/\.depth_func = GL_GREATER,/.depth_func = GL_GEQUAL,/"
     said "\`shaded_pixels=2154464\` both ways at the default 800×600"
