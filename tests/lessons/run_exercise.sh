@@ -453,6 +453,26 @@ case $exercise in
         if grep -q "the visibility buffer's ids hold" "$out/$file.log"; then echo "FAIL $file refused"; fail=1; else
             echo "ok   $file taken"; fi
     done ;;
+16.6) # the edge pass's samples shaded with the one-sample pass's clamp (on a copy of the shaders), against 13 at 4 samples
+    said "default 271 (43/255), spots 306 (82/255), teapots 2,705 (33/255), city 2,862 (32/255), and the bunnies at 160×120 4,018 (20.9 %, 51/255)"
+    mkdir -p "$out/data"
+    data=${COURSE_DATA_DIR:-$src}
+    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    frag=$out/data/shaders/visibility_shade.frag
+    grep -qF ': shade_id(ids[s], one, range, depth);' "$frag" || { echo "FAIL: visibility_shade.frag's edge pass has no shade_id(ids[s], one"; exit 1; }
+    sed -i 's/: shade_id(ids\[s\], one, range, depth);/: shade_id(ids[s], true, range, depth);/' "$frag"
+    # each scene of agree.16_msaa4_* (tests/chapters/chapter_16.cmake): its frame, the page's pixels beyond 1/255 and max
+    for row in "default|$A/default.scene|320x240|271|43" "spots|$A/spots.scene|320x240|306|82" \
+               "teapots|$A/teapots.scene|320x240|2705|33" "city|$A/city.scene|320x240|2862|32" \
+               "bunnies|$A/bunnies.scene|160x120|4018|51"; do
+        IFS='|' read -r name scene size over_want max_want <<<"$row"
+        frame=(--headless --frames 1 --size "$size" --samples 4 --scene "$scene")
+        run "forward_$name" 13_msaa "${frame[@]}" --renderer forward --screenshot "$out/forward_$name.png"
+        run "clamped_$name" 16_visibility_buffer "${frame[@]}" --data-dir "$out/data" --screenshot "$out/clamped_$name.png"
+        line=$("$bin/imgdiff" "$out/forward_$name.png" "$out/clamped_$name.png" 2>&1 | grep "imgdiff:")
+        equal "$name against forward MSAA: max" "$(sed -n 's/.*max=\([0-9]*\) .*/\1/p' <<<"$line")" "$max_want"
+        near "$name: pixels beyond 1/255" "$(sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p' <<<"$line")" "$over_want"
+    done ;;
 02.5) # chapter 07 with reversed-z: its volume pass mirrored, the shader's background test, the guard let through
     said "68 pixels of the city at 800×800 change (beyond 1/255), and against chapter 00 only 6 are left beyond 1/255 (max 30/255) instead of the default's 63"
     said "the patched chapter draws the default layout's picture unchanged"
