@@ -416,6 +416,27 @@ case $exercise in
     equal "pixels beyond 0/255 against the golden, put back" \
         "$("$bin/imgdiff" --tolerance 0 "$src/tests/golden/01_fbo_setup.png" "$out/put_back.png" 2>&1 |
            sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0 ;;
+13.4) # each edge sample shaded at its own rebuilt point, not the centre's ray, city at 800x800 (on a copy of the shaders)
+    said "7,976 pixels beyond 1/255 (1.25 %, max 37/255) instead of 71 (max 6/255)"
+    said "7,618 pixels between the two deferred pictures"
+    mkdir -p "$out/data"
+    data=${COURSE_DATA_DIR:-$src}
+    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    frag=$out/data/shaders/msaa_deferred.frag
+    grep -q '^            su.position = centre_on_plane(p, s, su.normal);$' "$frag" ||
+        { echo "FAIL: msaa_deferred.frag's per-sample pass does not move the samples to the centre's ray"; exit 1; }
+    sed -i 's/^            su.position = centre_on_plane(p, s, su.normal);$/            su.position = sample_point(p, s);/' "$frag"
+    city=(--headless --size 800x800 --frames 1 --scene "$A/city.scene")
+    run forward 13_msaa "${city[@]}" --renderer forward --screenshot "$out/forward.png"
+    run centre 13_msaa "${city[@]}" --screenshot "$out/centre.png"
+    run own 13_msaa "${city[@]}" --data-dir "$out/data" --screenshot "$out/own.png"
+    # the page's pixels beyond 1/255 and max for each pair
+    for pair in "forward centre 71 6" "forward own 7976 37" "centre own 7618 37"; do
+        read -r a b over_want max_want <<<"$pair"
+        line=$("$bin/imgdiff" "$out/$a.png" "$out/$b.png" 2>&1 | grep "imgdiff:")
+        equal "$a against $b: max" "$(sed -n 's/.*max=\([0-9]*\) .*/\1/p' <<<"$line")" "$max_want"
+        near "$a against $b: pixels beyond 1/255" "$(sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p' <<<"$line")" "$over_want"
+    done ;;
 13.3) # is_edge without its plane test, on the city at 800x800 against forward (on a copy of the shaders)
     said "71 pixels beyond 1/255 (max 6/255, within \`13_vs_forward_msaa_city\`'s 0.015 %) before, 327 after (0.051 %, max 54/255)"
     said "253 pixels between the two deferred pictures"
