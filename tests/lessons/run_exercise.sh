@@ -186,6 +186,29 @@ case $exercise in
         --screenshot "$out/violet.png"
     near "pixels beyond 1/255" "$(over "$src/tests/golden/05_attenuation_radius.png" "$out/violet.png")" 40630
     grep -q "max=176 " "$out/imgdiff.log" && echo "ok   by up to 176/255" || { echo "FAIL: not by up to 176/255"; fail=1; } ;;
+05.2) # the textbook root in light_radius (a copy of common/scene/light.c): the default scene's ring unchanged
+    said "is still \`tests/golden/05_attenuation_radius_ring.png\` to the byte, and \`--verbose\` logs the same radii"
+    said "keeps r = 50.2 down to Kq = 1e-15 (50.1821), is 0.5 % short at 1e-16 (49.96) and 11.5 % at 1e-17 (44.4089)"
+    patched_common textbook 05_attenuation_radius common/scene/light.c "    c_e += p_e - k_e;" \
+        '/^    c_e += p_e - k_e;$/a\    if (kq != 0.0) /* the textbook root */\n        return (-kl + sqrt(kl * kl + 4.0 * kq * ldexp(c_m, c_e))) / (2.0 * kq);'
+    run ring textbook --headless --size 320x240 --frames 1 --view ring --verbose --screenshot "$out/ring.png"
+    equal "the ring's pixels beyond 0/255 against its golden" \
+        "$("$bin/imgdiff" --tolerance 0 "$src/tests/golden/05_attenuation_radius_ring.png" "$out/ring.png" 2>&1 |
+           sed -n 's/.*over_tol=\([0-9]*\) .*/\1/p')" 0
+    run ring_kept 05_attenuation_radius --headless --size 64x48 --frames 1 --verbose
+    equal "the default scene's radii logged" "$(grep -c -- '-> radius' "$out/ring.log")" 8
+    equal "radii that differ from the chapter's" \
+        "$(diff <(grep -- '-> radius' "$out/ring.log") <(grep -- '-> radius' "$out/ring_kept.log") | grep -c '^<')" 0
+    # one light of Kc = 1, Kl = 1, peak 1 added to the default scene's frame: the radius each logs
+    for row in 1e-15:50.2:50.1821 1e-16:50.2:49.96 1e-17:50.2:44.4089; do
+        IFS=: read -r kq conjugate textbook <<<"$row"
+        sed -n '/^light /q;p' "$A/default.scene" >"$out/kq_$kq.scene"
+        echo "light position 0 2 0 color 1 1 1 intensity 1 attenuation 1 1 $kq" >>"$out/kq_$kq.scene"
+        run "conjugate_$kq" 05_attenuation_radius --headless --size 64x48 --frames 1 --verbose --scene "$out/kq_$kq.scene"
+        printed "conjugate_$kq" "light 0: kc 1 kl 1 kq $kq intensity 1 -> radius $conjugate"
+        run "textbook_$kq" textbook --headless --size 64x48 --frames 1 --verbose --scene "$out/kq_$kq.scene"
+        printed "textbook_$kq" "light 0: kc 1 kl 1 kq $kq intensity 1 -> radius $textbook"
+    done ;;
 05.3) # light 4's radius either side of the camera's distance
     said "camera (distance 6.31)"
     said "between 0.0482 (\`--cutoff 0.0482 --verbose\` logs light 4's radius as 6.31327) and 0.0484 (6.29874"
