@@ -12,7 +12,7 @@ function(course_page_exercises)
   endforeach()
 endfunction()
 if(TARGET 00_forward AND TARGET imgdiff)
-  course_page_exercises(00.2 00.3 01.2 02.3 02.4 02.5 03.3 04.1 05.1 05.2 05.3 06.2 07.2 07.3 08.4 10.5 12.5 10.6 11.1 13.3 13.4 13.6 14.3 14.4 16.3 16.4 16.6 16.7)
+  course_page_exercises(00.2 00.3 01.2 02.3 02.4 02.5 03.3 04.1 05.1 05.2 05.3 06.2 07.2 07.3 08.4 10.5 12.5 10.6 11.1 13.3 13.4 13.6 14.3 14.4 16.3 16.4 16.6 16.7 17.5)
 endif()
 # Not exercises: the tables of docs/03 ("How close to forward") and docs/06 ("How exact is RGBA16F?"),
 # measured again.
