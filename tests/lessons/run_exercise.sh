@@ -55,18 +55,8 @@ bench=(--headless --frames 1 --warmup 0 --bench)
 # A header the chapter includes may be patched the same way (HEADER: its path in the course, found
 # first on the include path); only the chapter sees the change, not the libraries built before it.
 patched_chapter() { # NAME CHAPTER 'FIXED TEXT' SED_SCRIPT [HEADER HEADER_SED_SCRIPT]: the text must be there
-    local name=$1 chapter=$2 before=$3 script=$4 header=${5:-} header_script=${6:-}
-    local build=$bin/.. dir=CMakeFiles/$chapter.dir
-    [ -f "$build/$dir/flags.make" ] && [ -f "$build/$dir/link.txt" ] ||
-        { echo "FAIL: no $dir/flags.make or link.txt under $build"; exit 1; }
-    mkdir -p "$out/bin" "$out/patched"
-    local copy=$out/patched/$name.c
-    cp "$src/chapters/$chapter.c" "$copy" || exit 1
-    grep -qF -- "$before" "$copy" || { echo "FAIL: chapters/$chapter.c no longer has: $before"; exit 1; }
-    sed -i "$script" "$copy"
-    if [ -z "$header" ] && cmp -s "$src/chapters/$chapter.c" "$copy"; then echo "FAIL: the patch changed nothing"; exit 1; fi
-    diff -u "$src/chapters/$chapter.c" "$copy" | sed -n '3,$p' | sed 's/^/     /'
-    local first=""
+    local name=$1 chapter=$2 header=${5:-} header_script=${6:-} first=""
+    patched_copy "$name" "chapters/$chapter.c" "$3" "$4" "$header" || exit 1
     if [ -n "$header" ]; then
         first=$out/patched/$name.include
         mkdir -p "$first" && cp "$src/$header" "$first/" || exit 1
@@ -75,20 +65,7 @@ patched_chapter() { # NAME CHAPTER 'FIXED TEXT' SED_SCRIPT [HEADER HEADER_SED_SC
         diff -u "$src/$header" "$first/${header##*/}" | sed -n '3,$p' | sed 's/^/     /'
         first="-I$first"
     fi
-    local cc defines includes flags
-    cc=$(sed -n 's/^# compile C with //p' "$build/$dir/flags.make")
-    defines=$(sed -n 's/^C_DEFINES = //p' "$build/$dir/flags.make")
-    includes=$(sed -n 's/^C_INCLUDES = //p' "$build/$dir/flags.make")
-    flags=$(sed -n 's/^C_FLAGS = //p' "$build/$dir/flags.make")
-    # shellcheck disable=SC2086 # the flags are CMake's words, one per option
-    (cd "$build" && "${cc:-cc}" $defines $first $includes $flags -c "$copy" -o "$out/patched/$name.o") ||
-        { echo "FAIL: the patched chapters/$chapter.c does not compile"; exit 1; }
-    local link
-    link=$(sed -e "s| $dir/chapters/$chapter\.c\.o | $out/patched/$name.o |" \
-               -e "s| -o bin/$chapter | -o $out/bin/$name |" "$build/$dir/link.txt")
-    case $link in *"$out/patched/$name.o"*"$out/bin/$name"*) ;;
-        *) echo "FAIL: $dir/link.txt does not name chapters/$chapter.c.o and bin/$chapter"; exit 1 ;; esac
-    (cd "$build" && eval "$link") || { echo "FAIL: the patched $chapter does not link"; exit 1; }
+    patched_build "$name" "$chapter" "CMakeFiles/$chapter.dir/flags.make" "$first" replace
     echo "ok   built $chapter with the patch as $name"
 }
 
@@ -96,30 +73,43 @@ patched_chapter() { # NAME CHAPTER 'FIXED TEXT' SED_SCRIPT [HEADER HEADER_SED_SC
 # compiled with the flags CMake gave the common library, its object put on the chapter's link line
 # before the libraries, so it stands in for theirs. The binary is OUT_DIR/bin/NAME.
 patched_common() { # NAME CHAPTER SOURCE 'FIXED TEXT' SED_SCRIPT
-    local name=$1 chapter=$2 source=$3 before=$4 script=$5
-    local build=$bin/.. dir=CMakeFiles/$chapter.dir flags=CMakeFiles/common.dir/flags.make
-    [ -f "$build/$flags" ] && [ -f "$build/$dir/link.txt" ] || { echo "FAIL: no $flags or $dir/link.txt"; exit 1; }
+    local name=$1 chapter=$2 source=$3
+    patched_copy "$name" "$source" "$4" "$5" "" || exit 1
+    patched_build "$name" "$chapter" CMakeFiles/common.dir/flags.make "" add
+    echo "ok   built $chapter with the patched $source as $name"
+}
+
+# OUT_DIR/patched/NAME.c: the course's SOURCE with SED_SCRIPT applied, which must change it (unless a
+# header is patched instead) and find FIXED TEXT first; the change printed.
+patched_copy() { # NAME SOURCE 'FIXED TEXT' SED_SCRIPT HEADER
+    local copy=$out/patched/$1.c
     mkdir -p "$out/bin" "$out/patched"
-    local copy=$out/patched/$name.c
-    cp "$src/$source" "$copy" || exit 1
-    grep -qF -- "$before" "$copy" || { echo "FAIL: $source no longer has: $before"; exit 1; }
-    sed -i "$script" "$copy"
-    if cmp -s "$src/$source" "$copy"; then echo "FAIL: the patch changed nothing"; exit 1; fi
-    diff -u "$src/$source" "$copy" | sed -n '3,$p' | sed 's/^/     /'
-    local cc defines includes cflags link
+    cp "$src/$2" "$copy" || return 1
+    grep -qF -- "$3" "$copy" || { echo "FAIL: $2 no longer has: $3"; return 1; }
+    sed -i "$4" "$copy"
+    if [ -z "$5" ] && cmp -s "$src/$2" "$copy"; then echo "FAIL: the patch changed nothing"; return 1; fi
+    diff -u "$src/$2" "$copy" | sed -n '3,$p' | sed 's/^/     /'
+}
+
+# OUT_DIR/patched/NAME.c compiled with FLAGS_FILE's flags (and INCLUDE first), then CHAPTER's link line
+# with that object replacing the chapter's own (replace) or beside it, before the libraries (add).
+patched_build() { # NAME CHAPTER FLAGS_FILE INCLUDE replace|add
+    local name=$1 chapter=$2 flags=$3 first=$4 build=$bin/.. dir=CMakeFiles/$2.dir
+    [ -f "$build/$flags" ] && [ -f "$build/$dir/link.txt" ] || { echo "FAIL: no $flags or $dir/link.txt under $build"; exit 1; }
+    local cc defines includes cflags object=$dir/chapters/$chapter.c.o link
     cc=$(sed -n 's/^# compile C with //p' "$build/$flags")
     defines=$(sed -n 's/^C_DEFINES = //p' "$build/$flags")
     includes=$(sed -n 's/^C_INCLUDES = //p' "$build/$flags")
     cflags=$(sed -n 's/^C_FLAGS = //p' "$build/$flags")
     # shellcheck disable=SC2086 # the flags are CMake's words, one per option
-    (cd "$build" && "${cc:-cc}" $defines $includes $cflags -c "$copy" -o "$out/patched/$name.o") ||
-        { echo "FAIL: the patched $source does not compile"; exit 1; }
-    link=$(sed -e "s| $dir/chapters/$chapter\.c\.o | $dir/chapters/$chapter.c.o $out/patched/$name.o |" \
-               -e "s| -o bin/$chapter | -o $out/bin/$name |" "$build/$dir/link.txt")
+    (cd "$build" && "${cc:-cc}" $defines $first $includes $cflags -c "$out/patched/$name.c" -o "$out/patched/$name.o") ||
+        { echo "FAIL: the patched copy $name.c does not compile"; exit 1; }
+    local with="$out/patched/$name.o"
+    [ "$5" = add ] && with="$object $out/patched/$name.o"
+    link=$(sed -e "s| $object | $with |" -e "s| -o bin/$chapter | -o $out/bin/$name |" "$build/$dir/link.txt")
     case $link in *"$out/patched/$name.o"*"$out/bin/$name"*) ;;
         *) echo "FAIL: $dir/link.txt does not name chapters/$chapter.c.o and bin/$chapter"; exit 1 ;; esac
-    (cd "$build" && eval "$link") || { echo "FAIL: $chapter with the patched $source does not link"; exit 1; }
-    echo "ok   built $chapter with the patched $source as $name"
+    (cd "$build" && eval "$link") || { echo "FAIL: $chapter with the patched copy $name.c does not link"; exit 1; }
 }
 
 case $exercise in
