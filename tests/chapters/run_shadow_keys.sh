@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # run_shadow_keys.sh IMGDIFF OUTDIR CHAPTER_14 CHAPTER_11 [ARGS...] - chapter 14's key and overlay,
 # driven headless by a --script (the window's events, frame by frame):
-#   1. K turns shadows off: the picture is chapter 11's, byte for byte; K again: chapter 14's again
+#   1. K turns shadows off: the picture is chapter 11's, byte for byte, drawn by the lighting programs
+#      built without SHADOWS (off costs nothing); K again: chapter 14's again, by the SHADOWS programs
 #   2. the overlay's lines: on, the lights shadowed and dropped and the tiles drawn (all of them in the
 #      first frame, none in a later one: cached); off after K; the passes line times the shadow pass
 #      as its own pass ("shadows")
@@ -41,6 +42,10 @@ if [ "$rc" -eq 77 ]; then echo "skip: no GL context: $(head -1 "$out.stderr")"; 
 same "$out.14.png" "$out.on.png" "K: before it, chapter 14's picture"
 same "$out.11.png" "$out.off.png" "K: shadows off, chapter 11's picture"
 same "$out.14.png" "$out.on-again.png" "K again: chapter 14's picture again"
+said=$(grep -o 'lighting programs built with[a-z]* SHADOWS' "$out.stderr" | tr '\n' '|')
+want='lighting programs built with SHADOWS|lighting programs built without SHADOWS|lighting programs built with SHADOWS|'
+[ "$said" = "$want" ] && say "ok   the programs switch: with SHADOWS, without after K, with after K again" ||
+  say "FAIL the programs' switches were '$said', want '$want'"
 
 # The overlay, frame by frame: "overlay: shadows on (K): N lights shadowed, D dropped, ..." and
 # "overlay: shadow tiles T, drawn K (...)".

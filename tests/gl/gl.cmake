@@ -13,12 +13,13 @@ if(TARGET chapters)
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(golden.scene_programs PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
 endif()
-# Chapter 17's --ssao off and chapter 19's --ibl off compile their lighting programs without the
-# feature, and with it on compile it in (tests/gl/run_feature_off_programs.sh).
-if(TARGET 17_ssao AND TARGET 19_image_based_light)
+# Chapter 14 with no light shadowed, 17's --ssao off and 19's --ibl off compile their lighting programs
+# without the feature, and with it on compile it in (tests/gl/run_feature_off_programs.sh).
+if(TARGET 14_shadows AND TARGET 17_ssao AND TARGET 19_image_based_light)
   add_test(NAME golden.feature_off_programs
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/gl/run_feature_off_programs.sh $<TARGET_FILE:17_ssao>
-            $<TARGET_FILE:19_image_based_light>
+    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/gl/run_feature_off_programs.sh $<TARGET_FILE:14_shadows>
+            $<TARGET_FILE:17_ssao> $<TARGET_FILE:19_image_based_light>
+            ${CMAKE_SOURCE_DIR}/assets/scenes/default.scene ${COURSE_TEST_OUT}
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
   set_tests_properties(golden.feature_off_programs PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
 endif()

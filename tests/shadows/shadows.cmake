@@ -61,14 +61,3 @@ if(TARGET 14_shadows)
     set_tests_properties(window.${chapter}_shadow_keys PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
   endforeach()
 endif()
-
-# Chapter 14 runs its SHADOWS programs only while a light is shadowed: K switches to chapter 11's own
-# programs and picture and back, and --shadows 0 or a scene of `shadow off` lights compiles no SHADOWS
-# lighting program (tests/shadows/run_shadow_programs.sh).
-if(TARGET 14_shadows AND TARGET 11_clustered)
-  add_test(NAME window.14_shadow_programs
-    COMMAND ${BASH} ${CMAKE_SOURCE_DIR}/tests/shadows/run_shadow_programs.sh $<TARGET_FILE:imgdiff>
-            ${COURSE_TEST_OUT} $<TARGET_FILE:14_shadows> $<TARGET_FILE:11_clustered>
-    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-  set_tests_properties(window.14_shadow_programs PROPERTIES LABELS golden SKIP_RETURN_CODE 77)
-endif()
