@@ -3,10 +3,15 @@
 // chapters before 14, and chapter 14 with no light shadowed, compile none of it.
 // Tables (common/base/shader_layout.h; common/shadows/shadow_atlas.c fills them):
 //   u_shadow_lights, one texel per light: first tile (-1: unshadowed), faces (6: a cube, 1: a spot),
-//     the normal offset in texels, the PCF taps a side
+//     the normal offset in texels, 0 (unused)
+// SHADOW_PCF, the taps a side, comes with SHADOWS (shadow_atlas_extra), so the lookup's loop is known
+// when the program is built.
 //   u_shadow_tiles, SHADER_SHADOW_TILE_TEXELS per tile: the light's view-projection for that face,
 //     then (x, y, size) of the tile in the atlas in texels and the tangent of half its field
 #ifdef SHADOWS
+#ifndef SHADOW_PCF
+#define SHADOW_PCF 1 // a program built with SHADOWS alone (the GLSL check): chapter 14's default
+#endif
 uniform sampler2DShadow u_shadow_atlas; // depth, compared with GL_LEQUAL, GL_LINEAR: 2 x 2 comparisons, weighted
 uniform samplerBuffer u_shadow_lights;
 uniform samplerBuffer u_shadow_tiles;
@@ -45,15 +50,11 @@ float shadow_visibility(int i, vec3 light_position, vec3 p, vec3 n)
     vec2 st = (ndc.xy * 0.5 + 0.5) * tile.z;
     float ref = min(ndc.z * 0.5 + 0.5, 1.0);
     vec2 atlas = vec2(textureSize(u_shadow_atlas, 0));
-#if defined(SHADOW_PCF) && SHADOW_PCF == 1
-    // PCF 1 (the default), known when the program is built: one comparison, no loop
+#if SHADOW_PCF == 1
+    // PCF 1, the default: one comparison, no loop
     return texture(u_shadow_atlas, vec3((tile.xy + clamp(st, vec2(1.0), vec2(tile.z - 1.0))) / atlas, ref));
 #else
-#ifdef SHADOW_PCF
-    const int r = SHADOW_PCF / 2; // the loop's bounds known when the program is built
-#else
-    int r = int(info.w) / 2; // a program built without it reads the light's table
-#endif
+    const int r = SHADOW_PCF / 2;
     float lit = 0.0;
     for (int y = -r; y <= r; y++)
         for (int x = -r; x <= r; x++) {

@@ -18,7 +18,7 @@
  *   visibility ids (chapter 16):  one R32UI per pixel, the object + 1 above VIS_TRIANGLE_BITS bits of
  *                            triangle (its index in its mesh, gl_PrimitiveID)
  *   shadow tables (chapter 14, shaders/shadows.glsl): per light one texel (first tile or -1, faces 1 or 6,
- *                            normal offset in texels, PCF taps per side); per tile SHADOW_TILE_TEXELS
+ *                            normal offset in texels, 0); per tile SHADOW_TILE_TEXELS
  */
 #ifndef COMMON_SHADER_LAYOUT_H
 #define COMMON_SHADER_LAYOUT_H
@@ -61,7 +61,7 @@
     X(UNIT_LIGHT_INDEX, 6)                                                                                 \
     X(UNIT_IMAGE, 0)   /* a full-screen pass's one input texture */                                    \
     X(UNIT_SHADOW_ATLAS, 8)  /* chapter 14: the depth atlas (a comparison sampler) */                       \
-    X(UNIT_SHADOW_LIGHTS, 9) /* per light: first tile, faces, tile size in texels, gutter */               \
+    X(UNIT_SHADOW_LIGHTS, 9) /* per light: first tile, faces, normal offset, 0 */                          \
     X(UNIT_SHADOW_TILES, 10) /* per tile: its light-space matrix, its place in the atlas */                \
     X(SHADOW_TILE_TEXELS, 5) /* matrix columns 0-3, then (x, y, size in texels, tan of half the field) */  \
     X(SHADOW_MAX_PCF, 5)     /* the widest PCF kernel: 5 x 5 taps */                                   \

@@ -131,8 +131,8 @@ static void draw_tiles(shadow_atlas *s, const gpu_scene *gs)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-/* The two tables (shader_layout.h): per light its first tile, faces, normal offset and PCF; per tile
- * its matrix and its square. */
+/* The two tables (shader_layout.h): per light its first tile, faces and normal offset (the PCF is a
+ * define, SHADOW_PCF); per tile its matrix and its square. */
 static bool upload_tables(shadow_atlas *s, int lights)
 {
     const shadow_plan *p = &s->plan;
@@ -145,7 +145,7 @@ static bool upload_tables(shadow_atlas *s, int lights)
         float *t = &s->light_texels[4 * i];
         bool shadowed = s->enabled && p->status[i] == SHADOW_SHADOWED; /* disabled: no plan read */
         t[0] = shadowed ? (float)p->first_tile[i] : -1.0f;
-        t[1] = shadowed ? (float)p->faces[i] : 0.0f, t[2] = p->desc.normal_offset, t[3] = (float)p->desc.pcf;
+        t[1] = shadowed ? (float)p->faces[i] : 0.0f, t[2] = p->desc.normal_offset, t[3] = 0.0f;
     }
     memset(s->tile_texels, 0, 4 * sizeof(float) * (size_t)tile_texels);
     for (int k = 0; k < p->tile_count; k++) {
