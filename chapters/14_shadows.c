@@ -20,7 +20,7 @@
  *      (shadow_atlas_extra): a fragment finds the face from the light-to-point vector, moves along
  *      its normal by --normal-offset texels and averages --pcf x --pcf comparisons inside the tile.
  *      A frame with no light shadowed (--shadows 0, every light `shadow off`, or K) runs chapter 11's
- *      own programs, built without SHADOWS: shadows cost nothing while off (use_shadow_programs)
+ *      own programs, built without SHADOWS: shadows cost nothing while off (frame)
  * Read docs/14_shadows.md alongside.
  */
 #include "app.h"
@@ -76,7 +76,6 @@ static const gl_pass_state deferred_pass = {.depth_write = false};
 static struct {
     shadow_atlas atlas;
     gl_program_extra extra; /* the atlas's SHADOWS define and inputs (shadow_atlas_extra) */
-    int shadow_programs;    /* the last frame's: 1 built with SHADOWS, 0 without, -1 none yet */
     gbuffer g;
     clusters c;
     forward fwd;
@@ -117,7 +116,6 @@ static bool init(app *a)
     shadow_plan_desc desc;
     GLenum format;
     float slope;
-    state.shadow_programs = -1;
     if (!read_options(a, &desc, &format, &slope) || !shadow_atlas_create(&state.atlas, &desc, format, slope))
         return false;
     /* chapter 11's lists where it makes them by default, its programs built with SHADOWS */
@@ -189,21 +187,16 @@ static bool draw_views(app *a)
     return ok;
 }
 
-/* The shading programs for this frame: built with SHADOWS while the plan shadows a light, chapter
- * 11's own while none is (each variant built once, on first use: gl_program_variant). */
-static void use_shadow_programs(void)
-{
-    const gl_program_extra *extra = chapter_14_shadows_extra(&state.atlas, &state.extra, NULL, &state.shadow_programs);
-    clusters_set_extra(&state.c, extra);
-    forward_set_extra(&state.fwd, extra);
-}
-
 static bool frame(app *a)
 {
     /* 1., 2.: the plan and the tiles it says changed; then the frame, which reads them */
     if (!shadow_atlas_update(&state.atlas, &a->gs))
         return false;
-    use_shadow_programs();
+    /* the frame's programs: with SHADOWS while the plan shadows a light, chapter 11's own while none is
+     * (each variant built once, on first use: gl_program_variant) */
+    const gl_program_extra *extra = shadow_atlas_programs(&state.atlas, &state.extra, NULL);
+    clusters_set_extra(&state.c, extra);
+    forward_set_extra(&state.fwd, extra);
     shadow_views_overlay(&state.atlas, a->overlay_lines, sizeof a->overlay_lines);
     a->time += (float)state.time_step; /* --time-step: the next frame's time (the window adds its own) */
     a->shaded_pixels = -1;
@@ -284,19 +277,6 @@ bool chapter_14_shadows_create(app *a, shadow_atlas *s, gl_program_extra *extra)
 bool chapter_14_shadows_update(shadow_atlas *s, const gpu_scene *gs)
 {
     return !s->depth_program || shadow_atlas_update(s, gs);
-}
-
-const gl_program_extra *chapter_14_shadows_extra(const shadow_atlas *s, const gl_program_extra *with,
-                                                 const gl_program_extra *without, int *said)
-{
-    if (!s->depth_program)
-        return without; /* no atlas (--shadows 0 in 15 to 19): nothing to switch, nothing said */
-    const bool shadowed = s->enabled && s->plan.stats.shadowed > 0;
-    if (*said != (int)shadowed) /* said once per change */
-        log_info("shadows: %s", shadowed ? "the lighting programs built with SHADOWS"
-                                         : "no light shadowed: the lighting programs built without SHADOWS");
-    *said = shadowed;
-    return shadowed ? with : without;
 }
 
 bool chapter_14_shadows_key(shadow_atlas *s)

@@ -85,8 +85,7 @@ static struct {
     gl_program_variants accumulation; /* with chapter 14's SHADOWS while a light is shadowed, and without */
     const char *defines;              /* the light buffer's: LIGHT_PREPASS_PBR on a metallic-roughness scene */
     gl_program_extra shadows;         /* --shadows N: the atlas's define and inputs (none without) */
-    const gl_program_extra *extra;    /* this frame's: shadows, or none (chapter_14_shadows_extra) */
-    int shadow_programs;
+    const gl_program_extra *extra;    /* this frame's: shadows, or none (shadow_atlas_programs) */
     bool rgb; /* --specular rgb */
     bool pbr; /* the scene has metallic-roughness materials: LIGHT_PREPASS_PBR's buffers and shaders */
 } state;
@@ -111,7 +110,6 @@ static bool init(app *a)
     state.pbr = scene_has_pbr(a);
     state.rgb = state.pbr || strcmp(app_extra(a, "specular"), "rgb") == 0; /* mono: refused for deferred */
     const char *defines = state.defines = state.pbr ? "LIGHT_PREPASS_PBR 1" : NULL;
-    state.shadow_programs = -1;
     if (state.pbr)
         log_info("metallic-roughness scene: thin pass RGBA16F + depth, 12 bytes a pixel; light buffer "
                  "C, A, B in three RGBA16F, 24 bytes a pixel");
@@ -237,7 +235,7 @@ static bool frame(app *a)
     if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
         return false;
     /* shadows that are off cost nothing: the programs without them */
-    state.extra = chapter_14_shadows_extra(&state.atlas, &state.shadows, NULL, &state.shadow_programs);
+    state.extra = shadow_atlas_programs(&state.atlas, &state.shadows, NULL);
     clusters_set_extra(&state.c, state.extra);
     app_forward_set_extra(&a->forward, state.extra);
     if (!app_renderer_is(a, "deferred"))

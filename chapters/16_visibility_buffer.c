@@ -88,8 +88,7 @@ static struct {
     gl_program_variants shading; /* with chapter 14's SHADOWS while a light is shadowed, and without */
     char defines[32];            /* the shading pass's: VIS_SAMPLES with MSAA */
     gl_program_extra shadows;    /* --shadows N: the atlas's define and inputs (none without) */
-    const gl_program_extra *extra; /* this frame's: shadows, or none (chapter_14_shadows_extra) */
-    int shadow_programs;
+    const gl_program_extra *extra; /* this frame's: shadows, or none (shadow_atlas_programs) */
     GLuint map_samplers[2]; /* the material images read trilinear, without anisotropy (see make_samplers) */
 } state;
 
@@ -155,7 +154,6 @@ static bool init(app *a)
     state.samples = (int)n;
     snprintf(state.defines, sizeof state.defines, "VIS_SAMPLES %d", state.samples);
     /* --shadows N: the shading pass and forward read chapter 14's atlas (none: no define, no input) */
-    state.shadow_programs = -1;
     if (!chapter_14_shadows_create(a, &state.atlas, &state.shadows))
         return false;
     state.extra = &state.shadows;
@@ -254,7 +252,7 @@ static bool frame(app *a)
     if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
         return false;
     /* shadows that are off cost nothing: the programs without them */
-    state.extra = chapter_14_shadows_extra(&state.atlas, &state.shadows, NULL, &state.shadow_programs);
+    state.extra = shadow_atlas_programs(&state.atlas, &state.shadows, NULL);
     clusters_set_extra(&state.c, state.extra);
     app_forward_set_extra(&a->forward, state.extra);
     if (!app_renderer_is(a, "deferred"))

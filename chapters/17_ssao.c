@@ -73,7 +73,6 @@ static struct {
     shadow_atlas atlas;           /* --shadows N: chapter 14's; nothing made without it */
     gl_program_extra_pair extras; /* the occlusion's inputs and the atlas's, for every shading program */
     gl_program_extra occlusion, shadows, both; /* AMBIENT_OCCLUSION, SHADOWS (--shadows N), the two */
-    int shadow_programs;
 } state;
 
 /* This frame's shading programs: built with the occlusion while it is on and with chapter 14's
@@ -82,7 +81,7 @@ static void use_programs(void)
 {
     const gl_program_extra *with = state.ao.on ? &state.both : &state.shadows;
     const gl_program_extra *extra =
-        chapter_14_shadows_extra(&state.atlas, with, state.ao.on ? &state.occlusion : NULL, &state.shadow_programs);
+        shadow_atlas_programs(&state.atlas, with, state.ao.on ? &state.occlusion : NULL);
     clusters_set_extra(&state.c, extra);
     forward_set_extra(&state.fwd, extra);
 }
@@ -98,7 +97,6 @@ static bool init(app *a)
     /* chapter 11's lists where it makes them by default; its programs and forward's read the occlusion,
      * and with --shadows N chapter 14's atlas */
     state.occlusion = (gl_program_extra){.defines = "AMBIENT_OCCLUSION 1", .bind = ssao_bind, .user = &state.ao};
-    state.shadow_programs = -1;
     if (!chapter_14_shadows_create(a, &state.atlas, &state.shadows))
         return false;
     const gl_program_extra extra = state.both = gl_program_extra_join(&state.extras, &state.occlusion, &state.shadows);

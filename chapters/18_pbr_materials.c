@@ -68,7 +68,6 @@ static struct {
     clusters c;
     shadow_atlas atlas; /* --shadows N: chapter 14's; nothing made without it */
     gl_program_extra shadows; /* its SHADOWS define and inputs (none without it) */
-    int shadow_programs;
     fbo linear;      /* RGBA32F: the lighting pass's linear radiance, before the exposure */
     fbo forward_linear; /* RGBA32F + depth: the forward renderers' linear radiance, the same way */
     present_pass present;
@@ -94,7 +93,6 @@ static bool init(app *a)
     glm_vec3_copy(a->scene.ambient, state.ambient);
     apply_ambient(a);
     /* --shadows N: chapter 11's shading pass and forward read chapter 14's atlas (none: no define) */
-    state.shadow_programs = -1;
     if (!chapter_14_shadows_create(a, &state.atlas, &state.shadows))
         return false;
     app_forward_set_extra(&a->forward, &state.shadows);
@@ -190,7 +188,7 @@ static bool frame(app *a)
     if (!chapter_14_shadows_update(&state.atlas, &a->gs)) /* --shadows N: before anything shades */
         return false;
     /* shadows that are off cost nothing: the programs without them */
-    const gl_program_extra *extra = chapter_14_shadows_extra(&state.atlas, &state.shadows, NULL, &state.shadow_programs);
+    const gl_program_extra *extra = shadow_atlas_programs(&state.atlas, &state.shadows, NULL);
     clusters_set_extra(&state.c, extra);
     app_forward_set_extra(&a->forward, extra);
     if (!deferred)

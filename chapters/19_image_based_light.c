@@ -84,7 +84,6 @@ static struct {
      * and inputs, then the same with chapter 14's atlas (--shadows N) */
     gl_program_extra ambient[4], shadowed[4];
     gl_program_extra_pair pairs[4];
-    int shadow_programs;
     GLuint view_program;
     bool captured;
 } state;
@@ -104,7 +103,7 @@ static void use_programs(void)
 {
     int on = 2 * state.probes.on + state.ao.on;
     const gl_program_extra *extra =
-        chapter_14_shadows_extra(&state.atlas, &state.shadowed[on], &state.ambient[on], &state.shadow_programs);
+        shadow_atlas_programs(&state.atlas, &state.shadowed[on], &state.ambient[on]);
     clusters_set_extra(&state.c, extra);
     forward_set_extra(&state.fwd, extra);
 }
@@ -124,7 +123,6 @@ static bool init(app *a)
     static const char *const ambient_defines[4] = {NULL, "AMBIENT_OCCLUSION 1", "IMAGE_BASED_LIGHT 1",
                                                    "IMAGE_BASED_LIGHT 1\nAMBIENT_OCCLUSION 1"};
     gl_program_extra shadows; /* --shadows N: chapter 14's atlas too */
-    state.shadow_programs = -1;
     if (!chapter_14_shadows_create(a, &state.atlas, &shadows))
         return false;
     for (int i = 0; i < 4; i++) {

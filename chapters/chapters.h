@@ -57,14 +57,9 @@ extern const app_forward_plus chapter_11_forward_plus;
  *                                     so the chapter's picture is what it was. False (logged) on a
  *                                     bad value or a context that cannot make the atlas
  *   chapter_14_shadows_update(s, gs)  each frame, before anything shades: the tiles and tables
- *                                     (nothing without an atlas)
- *   chapter_14_shadows_extra(s, with, without, &said)
- *                                     after the update, the additions this frame's shading programs
- *                                     are built with: `with` (the atlas's SHADOWS and inputs, and the
- *                                     chapter's own) while the plan shadows a light, `without` (the
- *                                     chapter's own alone, or NULL) otherwise, so shadows that are off
- *                                     cost nothing; one line says each change (said: the last, -1 at
- *                                     start)
+ *                                     (nothing without an atlas); then shadow_atlas_programs picks
+ *                                     the frame's program additions (nothing shadowed: the ones
+ *                                     without SHADOWS)
  *   chapter_14_shadows_key(s)         shadows on / off; without an atlas, one line saying how to
  *                                     start with one
  *   shadow_atlas_destroy(s) at cleanup (nothing made: nothing to do). */
@@ -84,8 +79,6 @@ extern const char *const chapter_14_pcfs[];
          "4096", CLI_POWER_OF_TWO, 256, 32768}
 bool chapter_14_shadows_create(app *a, shadow_atlas *s, gl_program_extra *extra);
 bool chapter_14_shadows_update(shadow_atlas *s, const gpu_scene *gs);
-const gl_program_extra *chapter_14_shadows_extra(const shadow_atlas *s, const gl_program_extra *with,
-                                                 const gl_program_extra *without, int *said);
 bool chapter_14_shadows_key(shadow_atlas *s);
 
 /* The last line of a chapter: its main(), which hands the runner chapter 11's Forward+ (every chapter

@@ -33,7 +33,7 @@ static bool reserve(void **a, int *cap, int n, size_t size)
 bool shadow_atlas_create(shadow_atlas *s, const shadow_plan_desc *desc, GLenum format, float slope_bias)
 {
     memset(s, 0, sizeof *s);
-    s->format = format, s->slope_bias = slope_bias, s->enabled = true;
+    s->format = format, s->slope_bias = slope_bias, s->enabled = true, s->programs_said = -1;
     snprintf(s->defines, sizeof s->defines, "SHADOWS 1\nSHADOW_PCF %d", desc->pcf);
     const fbo_desc atlas = {.depth_format = format, .name = "shadow atlas"};
     if (!shadow_plan_create(&s->plan, desc) || !fbo_create(&s->target, &atlas, desc->atlas_size, desc->atlas_size))
@@ -189,4 +189,17 @@ void shadow_atlas_bind(GLuint program, const void *user)
 gl_program_extra shadow_atlas_extra(const shadow_atlas *s)
 {
     return (gl_program_extra){.defines = s->defines, .bind = shadow_atlas_bind, .user = s};
+}
+
+const gl_program_extra *shadow_atlas_programs(shadow_atlas *s, const gl_program_extra *with,
+                                              const gl_program_extra *without)
+{
+    if (!s->depth_program)
+        return without; /* no atlas (--shadows 0 in chapters 15 to 19): nothing to switch, nothing said */
+    const bool shadowed = s->enabled && s->plan.stats.shadowed > 0;
+    if (s->programs_said != (int)shadowed) /* said once per change */
+        log_info("shadows: %s", shadowed ? "the lighting programs built with SHADOWS"
+                                         : "no light shadowed: the lighting programs built without SHADOWS");
+    s->programs_said = shadowed;
+    return shadowed ? with : without;
 }

@@ -16,6 +16,13 @@
  *   shadow_atlas_bind(program, s)   the atlas and the tables on their units (SHADER_UNIT_SHADOW_*), and
  *                                   the samplers of `program` (in use) set to them: the bind of the
  *                                   gl_program_extra that chapters 14 to 19 hand to forward and the clusters
+ *   shadow_atlas_programs(s, with, without)
+ *                                   after the update, the additions the frame's shading programs are
+ *                                   built with: `with` (shadow_atlas_extra's, and the chapter's own)
+ *                                   while the plan shadows a light, `without` (the chapter's own alone,
+ *                                   or NULL) otherwise, so shadows that are off cost nothing (each
+ *                                   variant built once: gl_program_variant); one line says each change.
+ *                                   No atlas made (s zeroed): `without`, nothing said
  *   shadow_atlas_bytes(s)           the atlas's memory
  *   shadow_atlas_extra(s)           that gl_program_extra: "SHADOWS 1", SHADOW_PCF (the taps a side, so
  *                                   the lookup's loop is known when the program is built: one tap
@@ -36,6 +43,7 @@ typedef struct shadow_atlas {
     float slope_bias;
     bool enabled;
     char defines[40]; /* shadow_atlas_extra's: SHADOWS and SHADOW_PCF */
+    int programs_said; /* the programs last said to be drawing with it: 1 with SHADOWS, 0 without, -1 none yet */
     GLuint depth_program;
     GLuint light_buffer, light_texture, tile_buffer, tile_texture;
     float *light_texels, *tile_texels;
@@ -52,5 +60,7 @@ bool shadow_atlas_update(shadow_atlas *s, const gpu_scene *gs);
 void shadow_atlas_bind(GLuint program, const void *s);
 double shadow_atlas_bytes(const shadow_atlas *s);
 gl_program_extra shadow_atlas_extra(const shadow_atlas *s);
+const gl_program_extra *shadow_atlas_programs(shadow_atlas *s, const gl_program_extra *with,
+                                              const gl_program_extra *without);
 
 #endif
