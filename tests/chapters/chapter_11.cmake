@@ -22,7 +22,8 @@ function(chapter_11_tests)
   # The pictures the page shows (the default scene's lit picture is golden.11_clustered).
   course_golden_test(11_clustered_clusters ${C} 1 0.0001 --view clusters --lights 256)
   course_golden_test(11_clustered_overdraw ${C} 1 0.0001 --view overdraw --lights 256)
-  # Exercise 1's picture: 24 slices, each far slice deep enough to hold many lights.
+  # Exercise 1's picture: 24 slices instead of the cubic default, so each slice is deeper: fewer, wider
+  # bands across the floor, and hotter colours (more lights a cluster) towards the far end.
   course_golden_test(11_clustered_clusters_slices24 ${C} 1 0.0001 --view clusters --lights 256 --slices 24)
 
   # Both renderers against chapter 00: the default scene, the city at full size, the spots, 1024

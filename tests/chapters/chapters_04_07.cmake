@@ -18,7 +18,9 @@ function(chapters_04_07_tests)
   if(TARGET 04_light_volumes AND TARGET 00_forward)
     # Unscaled volume mesh: its faces cut inside the light's sphere (tests/unit/test_volume_mesh.c).
     course_golden_test(04_light_volumes_unscaled 04_light_volumes 1 0.0001 --scale none)
-    # Exercise 1's pictures: smaller volumes leave more seams; at 8 the last light drawn covers the others.
+    # Exercise 1's pictures (chapter 04 overwrites, no blending yet): at --radius 2 each light's volume is
+    # a small disc, its light cut off at the rim, and the floor between them unlit; at --radius 8 every
+    # volume covers the whole view and the last light drawn, the violet one, is all that shows.
     course_golden_test(04_light_volumes_radius2 04_light_volumes 1 0.0001 --radius 2)
     course_golden_test(04_light_volumes_radius8 04_light_volumes 1 0.0001 --radius 8)
     chapters_04_07_expect_bug(04_unscaled_loses_light 04_light_volumes VS 04_light_volumes --scale none)
