@@ -48,6 +48,15 @@ near() { # WHAT GOT WANT
 }
 bench=(--headless --frames 1 --warmup 0 --bench)
 
+# An exercise that changes a shader, performed on a copy: the shaders a chapter would read
+# (COURSE_DATA_DIR's, else the course's) copied to OUT_DIR/data/shaders, the assets linked beside them,
+# so that --data-dir OUT_DIR/data (or COURSE_SHADER_DIR=OUT_DIR/data/shaders) runs on the copy.
+shader_copy() {
+    local data=${COURSE_DATA_DIR:-$src}
+    mkdir -p "$out/data" && cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" ||
+        exit 1
+}
+
 # An exercise that changes a chapter's C code, performed on a copy: the one source copied, patched
 # with sed, compiled with the flags CMake gave the chapter and linked with its link line, its own
 # object replaced (the libraries are the ones already built). The binary is OUT_DIR/bin/NAME, which
@@ -143,9 +152,7 @@ case $exercise in
 02.3) # the reference layout's normal at full float precision: 1/255 here and there (on a copy of the shaders)
     said "203 pixels move, each by 1/255"
     said "against chapter 00 no pixel is beyond 1/255 either way (max 1 before and after"
-    mkdir -p "$out/data"
-    data=${COURSE_DATA_DIR:-$src} # the shaders the chapter would read
-    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    shader_copy
     frag=$out/data/shaders/gbuffer.frag
     grep -q 'vec4(octahedral_encode_half(n), specular' "$frag" || { echo "FAIL: gbuffer.frag has no octahedral_encode_half to replace"; exit 1; }
     sed -i 's/vec4(octahedral_encode_half(n), specular/vec4(octahedral_encode(n), specular/' "$frag"
@@ -271,9 +278,7 @@ case $exercise in
     printed cull_off " triangles=140821440 " ;;
 16.4) # the maps' gradients set to zero: level 0 everywhere (on a copy of the shaders)
     said "42 pixels beyond 1/255 against forward (up to 13/255) before, 20,587 (26.8 %) after, up to 211/255"
-    mkdir -p "$out/data"
-    data=${COURSE_DATA_DIR:-$src} # the shaders the chapter would read
-    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    shader_copy
     frag=$out/data/shaders/visibility_shade.frag
     [ "$(grep -cE '^        g_map_d[xy] = uvs \* \(w[xy] - wc\);$' "$frag")" = 2 ] ||
         { echo "FAIL: visibility_shade.frag does not set g_map_dx and g_map_dy as the page says"; exit 1; }
@@ -432,9 +437,7 @@ case $exercise in
 13.4) # each edge sample shaded at its own rebuilt point, not the centre's ray, city at 800x800 (on a copy of the shaders)
     said "7,976 pixels beyond 1/255 (1.25 %, max 37/255) instead of 71 (max 6/255)"
     said "7,618 pixels between the two deferred pictures"
-    mkdir -p "$out/data"
-    data=${COURSE_DATA_DIR:-$src}
-    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    shader_copy
     frag=$out/data/shaders/msaa_deferred.frag
     grep -q '^            su.position = centre_on_plane(p, s, su.normal);$' "$frag" ||
         { echo "FAIL: msaa_deferred.frag's per-sample pass does not move the samples to the centre's ray"; exit 1; }
@@ -453,9 +456,7 @@ case $exercise in
 13.3) # is_edge without its plane test, on the city at 800x800 against forward (on a copy of the shaders)
     said "71 pixels beyond 1/255 (max 6/255, within \`13_vs_forward_msaa_city\`'s 0.015 %) before, 327 after (0.051 %, max 54/255)"
     said "253 pixels between the two deferred pictures"
-    mkdir -p "$out/data"
-    data=${COURSE_DATA_DIR:-$src}
-    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    shader_copy
     frag=$out/data/shaders/msaa_deferred.frag
     grep -q '^        if (abs(dot(sample_point(p, s) - p0, n)) > tolerance)$' "$frag" ||
         { echo "FAIL: msaa_deferred.frag's is_edge has no plane test to drop"; exit 1; }
@@ -489,9 +490,7 @@ case $exercise in
     done ;;
 16.6) # the edge pass's samples shaded with the one-sample pass's clamp (on a copy of the shaders), against 13 at 4 samples
     said "default 271 (43/255), spots 306 (82/255), teapots 2,705 (33/255), city 2,862 (32/255), and the bunnies at 160×120 4,018 (20.9 %, 51/255)"
-    mkdir -p "$out/data"
-    data=${COURSE_DATA_DIR:-$src}
-    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    shader_copy
     frag=$out/data/shaders/visibility_shade.frag
     grep -qF ': shade_id(ids[s], one, range, depth);' "$frag" || { echo "FAIL: visibility_shade.frag's edge pass has no shade_id(ids[s], one"; exit 1; }
     sed -i 's/: shade_id(ids\[s\], one, range, depth);/: shade_id(ids[s], true, range, depth);/' "$frag"
@@ -527,9 +526,7 @@ s/\.cleanup = cleanup, \.key = key};$/.cleanup = cleanup, .key = key,\
                              .takes_reversed_z = true};/
 SED
 )"
-    mkdir -p "$out/data"
-    data=${COURSE_DATA_DIR:-$src}
-    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    shader_copy
     frag=$out/data/shaders/light_volume.frag
     grep -q '^    if (depth >= 1.0 || d > v_volume_radius) {$' "$frag" || { echo "FAIL: light_volume.frag has no depth >= 1.0"; exit 1; }
     sed -i 's/^    if (depth >= 1.0 || d > v_volume_radius) {$/    if (gbuffer_is_background(depth) || d > v_volume_radius) {/' "$frag"
@@ -548,9 +545,7 @@ SED
     said "mean error 0.0136 (0.0112 with four steps) and 4.26 % of pixels beyond 0.1 (3.06 %)"
     said "5.34 % (2.31 %), then the border, 2.96 % (2.01 %), and the silhouettes, 2.47 % (1.81 %)"
     said "near the thin post it gets better, 1.33 % (18.12 %)"
-    mkdir -p "$out/data"
-    data=${COURSE_DATA_DIR:-$src} # the shaders the chapter would read
-    cp -r "$data/shaders" "$out/data/shaders" || exit 1
+    shader_copy
     sed -i '1a #undef SHADER_AO_STEPS\n#define SHADER_AO_STEPS 1' "$out/data/shaders/ssao.frag"
     grep -q '^#define SHADER_AO_STEPS 1$' "$out/data/shaders/ssao.frag" || { echo "FAIL: the one step not set"; exit 1; }
     reference=$bin/../tests/test_ssao_reference # hard.ssao_reference's program and arguments, the defaults only
@@ -569,9 +564,7 @@ SED
     near "one step: near the thin post (0.01 %)" "$(share '  thin ')" 133 ;;
 03.3) # the background shaded too: the same picture, every pixel counted (on a copy of the shaders)
     said "\`shaded_pixels\` goes from 43,125 to 76,800, every pixel"
-    mkdir -p "$out/data"
-    data=${COURSE_DATA_DIR:-$src} # the shaders the chapter would read
-    cp -r "$data/shaders" "$out/data/shaders" && ln -s "$data/assets" "$out/data/assets" || exit 1
+    shader_copy
     frag=$out/data/shaders/deferred_fullscreen.frag
     grep -q '^        discard;$' "$frag" || { echo "FAIL: deferred_fullscreen.frag has no discard to remove"; exit 1; }
     sed -i 's/^        discard;$/        ;/' "$frag"
